@@ -1,0 +1,38 @@
+// glint: C++ side of the single-source kernel compat layer, opening half.
+//
+// Kernel files (include/glint/kernels/*.glsl) are written in the common subset of GLSL 4.50 and
+// C++17 (docs/conventions.md). On the C++ side a component header includes them inside a class
+// template `template <class real> struct ..._kernels { GLINT_KERNEL_TYPES ... };` placed in
+// namespace glint::detail::glsl, where GLM's functions are visible unqualified. This header
+// defines the macros the kernel text needs; kernel_end.hpp removes every one of them, so nothing
+// leaks into user code. No include guard: the pair is used once per component header.
+#include <cstdint>
+#include <type_traits>
+
+#include <glm/glm.hpp>
+
+namespace glint {
+namespace detail {
+namespace glsl {
+// GLSL builtins (mix, clamp, exp, log, floor, ...) and types (uvec3, ...) come from GLM.
+using namespace glm;  // NOLINT: confined to glint::detail::glsl
+}  // namespace glsl
+}  // namespace detail
+}  // namespace glint
+
+// A kernel function: a static member of the kernels class template (in GLSL: nothing).
+#define GLINT_FN static
+// An out-parameter (in GLSL: `out T`).
+#define GLINT_OUT(T) T&
+// An expression the compiler must evaluate as written (in GLSL: `precise`). C++ needs nothing:
+// the tests build with -ffp-contract=off and without -ffast-math.
+#define GLINT_PRECISE
+// A named constant (in GLSL: `const T`).
+#define GLINT_CONST(T) static constexpr T
+// The vector aliases that depend on the precision `real` (in GLSL: the builtin float vectors).
+#define GLINT_KERNEL_TYPES                                    \
+    using vec2 = ::glm::vec<2, real, ::glm::defaultp>;        \
+    using vec3 = ::glm::vec<3, real, ::glm::defaultp>;        \
+    using vec4 = ::glm::vec<4, real, ::glm::defaultp>;        \
+    static_assert(std::is_same<real, float>::value || std::is_same<real, double>::value, \
+                  "glint kernels exist for float and double");

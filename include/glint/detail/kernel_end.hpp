@@ -1,0 +1,7 @@
+// glint: C++ side of the single-source kernel compat layer, closing half.
+// Removes every macro kernel_begin.hpp defined.
+#undef GLINT_FN
+#undef GLINT_OUT
+#undef GLINT_CONST
+#undef GLINT_PRECISE
+#undef GLINT_KERNEL_TYPES

@@ -1,0 +1,214 @@
+// glint core kernels: counter-based hashing, uniform variates, erfinv and the normal quantile,
+// and stable evaluations of (1-p)^N and 1-(1-p)^N.
+// Single source for C++ and GLSL 4.50 (docs/conventions.md). GLSL users include prelude.glsl
+// first; C++ users include <glint/core.hpp>.
+
+// ---------------------------------------------------------------------------------------------
+// Hashing.
+
+// PCG3D: Jarzynski and Olano, "Hash Functions for GPU Rendering", JCGT 9(3), 2020. Three rounds
+// of a linear congruential step and cross-multiplication of the lanes; bijective on uvec3.
+// 1664525 and 1013904223 are the 32-bit LCG multiplier and increment of Numerical Recipes
+// (Press et al., 2nd ed., Sec. 7.1), as that paper uses them. Bit-exact on CPU and GPU: unsigned
+// arithmetic wraps modulo 2^32 in both languages.
+GLINT_FN uvec3 glint_pcg3d(uvec3 v) {
+    v = v * 1664525u + 1013904223u;
+    v.x += v.y * v.z;
+    v.y += v.z * v.x;
+    v.z += v.x * v.y;
+    v ^= v >> 16u;
+    v.x += v.y * v.z;
+    v.y += v.z * v.x;
+    v.z += v.x * v.y;
+    return v;
+}
+
+// A uniform variate in [0, 1) from the top 24 bits of a hash: k * 2^-24, exact in float.
+GLINT_FN real glint_unit_from_bits(uint h) {
+    return real(h >> 8u) * real(5.9604644775390625e-8);  // 2^-24
+}
+
+// A uniform variate in the open interval (0, 1) from the top 23 bits of a hash:
+// (2k + 1) * 2^-24, k < 2^23, so values run from 2^-24 to 1 - 2^-24 and are exact in float.
+// Use it where 0 or 1 would be a singular input (quantiles, logarithms).
+GLINT_FN real glint_open_unit_from_bits(uint h) {
+    return real(((h >> 9u) << 1u) | 1u) * real(5.9604644775390625e-8);  // 2^-24
+}
+
+// ---------------------------------------------------------------------------------------------
+// erfinv and the normal quantile.
+
+// The polynomial of Giles' single-precision erfinv ("Approximating the erfinv function", GPU
+// Computing Gems Jade Ed., 2011), in w = -log(1 - x^2). The central branch (w < 5) is a degree-8
+// polynomial in w - 2.5, the tail branch a degree-8 polynomial in sqrt(w) - 3, fitted by Giles
+// for single precision and covering w <= 16.0, i.e. every float x in (-1, 1). The coefficients
+// are Giles' published digits. erfinv(x) = x * glint_erfinv_poly(w). Measured accuracy in
+// docs/core_numerics.md.
+GLINT_FN real glint_erfinv_poly(real w) {
+    real p;
+    if (w < real(5)) {
+        real t = w - real(2.5);
+        p = real(2.81022636e-08);
+        p = real(3.43273939e-07) + p * t;
+        p = real(-3.5233877e-06) + p * t;
+        p = real(-4.39150654e-06) + p * t;
+        p = real(0.00021858087) + p * t;
+        p = real(-0.00125372503) + p * t;
+        p = real(-0.00417768164) + p * t;
+        p = real(0.246640727) + p * t;
+        p = real(1.50140941) + p * t;
+    } else {
+        real t = sqrt(w) - real(3);
+        p = real(-0.000200214257);
+        p = real(0.000100950558) + p * t;
+        p = real(0.00134934322) + p * t;
+        p = real(-0.00367342844) + p * t;
+        p = real(0.00573950773) + p * t;
+        p = real(-0.0076224613) + p * t;
+        p = real(0.00943887047) + p * t;
+        p = real(1.00167406) + p * t;
+        p = real(2.83297682) + p * t;
+    }
+    return p;
+}
+
+// The inverse error function. Domain (-1, 1); |x| is clamped to 1 - 2^-24 (the largest float
+// below 1), so +-1 and beyond return +-erfinv(1 - 2^-24) = +-3.8325. NaN in, NaN out.
+GLINT_FN real glint_erfinv(real x) {
+    real a = min(abs(x), real(0.999999940395355224609375));  // 1 - 2^-24
+    // (1 - a)(1 + a) rather than 1 - a^2: 1 - a is exact for a >= 0.5, which keeps w accurate
+    // in the tail where it matters.
+    real w = -log((real(1) - a) * (real(1) + a));
+    return sign(x) * a * glint_erfinv_poly(w);
+}
+
+// The standard normal quantile Phi^-1(u) = sqrt(2) erfinv(2u - 1), evaluated without forming
+// 2u - 1 in the tails: with t = min(u, 1 - u) (exact in float), 1 - x^2 = 4 t (1 - t), so w keeps
+// full relative precision down to t = 2^-25. Domain (0, 1); t is clamped to [2^-25, 0.5], so
+// u <= 2^-25 returns Phi^-1(2^-25) = -5.4200 and u >= 1 - 2^-25 returns +5.4200.
+GLINT_FN real glint_normal_quantile(real u) {
+    real t = clamp(min(u, real(1) - u), real(2.98023223876953125e-8), real(0.5));  // 2^-25
+    real w = -log(real(4) * t * (real(1) - t));
+    real x = real(1) - real(2) * t;  // |2u - 1|
+    real s = (u < real(0.5)) ? real(-1) : real(1);
+    // sqrt(2) to 17 significant digits.
+    return s * real(1.4142135623730951) * x * glint_erfinv_poly(w);
+}
+
+// ---------------------------------------------------------------------------------------------
+// log1p and expm1, which GLSL lacks. Neither relies on the builtin log, whose GLSL precision is
+// only an absolute 2^-21 on [0.5, 2] (GLSL 4.50 spec, Sec. 4.7.1) and which Mesa llvmpipe meets
+// with 2e5 ulp of relative error just below 1 (docs/conventions.md), so the identities
+// log1p(x) = log(u) x / (u - 1) and expm1(x) = (u - 1) x / log(u) fail on the GPU.
+
+// Smallest normal float, 2^-126.
+GLINT_CONST(real) GLINT_FLT_MIN_NORMAL = real(1.17549435082228750797e-38);
+
+// log(1 + x). Domain x > -1; x <= -1 returns log(2^-126) = -87.34. Range reduction
+// 1 + x = m 2^e with m in [sqrt(1/2), sqrt(2)), then log(m) = 2 atanh(s), s = (m - 1)/(m + 1),
+// |s| <= 0.1716, by its Taylor series in z = s^2 <= 0.0295 truncated after z^11 (relative
+// truncation error below z^12 / 25 = 1.7e-20, enough for double). The rounding error of 1 + x is
+// added back to first order. Measured error in docs/core_numerics.md.
+GLINT_FN real glint_log1p(real x) {
+    x = max(x, real(-1));
+    GLINT_PRECISE real u = max(real(1) + x, GLINT_FLT_MIN_NORMAL);
+    GLINT_PRECISE real c = (x - (u - real(1))) / u;  // 1 + x = u (1 + c)
+    int e;
+    real m = frexp(u, e);  // u = m 2^e, m in [0.5, 1)
+    bool low = m < real(0.70710678118654752440);  // sqrt(1/2) to 21 digits
+    m = low ? real(2) * m : m;
+    e = low ? e - 1 : e;
+    real f = m - real(1);  // exact (Sterbenz)
+    real s = f / (real(2) + f);
+    real z = s * s;
+    real t = real(1) / real(23);
+    t = real(1) / real(21) + z * t;
+    t = real(1) / real(19) + z * t;
+    t = real(1) / real(17) + z * t;
+    t = real(1) / real(15) + z * t;
+    t = real(1) / real(13) + z * t;
+    t = real(1) / real(11) + z * t;
+    t = real(1) / real(9) + z * t;
+    t = real(1) / real(7) + z * t;
+    t = real(1) / real(5) + z * t;
+    t = real(1) / real(3) + z * t;
+    t = real(1) + z * t;
+    // ln 2 to 21 digits.
+    return real(e) * real(0.693147180559945309417) + (real(2) * s * t + c);
+}
+
+// exp(x) - 1 for x <= 0 (the only use here; x > 0 is treated as 0). For |x| < ln(2)/2 the
+// Taylor series truncated after x^14/14! (relative truncation error below
+// 0.347^14 / 15! = 3e-19); below that, exp(x) - 1, where the result is at most -0.29 and the
+// subtraction loses nothing.
+GLINT_FN real glint_expm1_nonpositive(real x) {
+    x = min(x, real(0));
+    real t = real(1) + x / real(14);
+    t = real(1) + x / real(13) * t;
+    t = real(1) + x / real(12) * t;
+    t = real(1) + x / real(11) * t;
+    t = real(1) + x / real(10) * t;
+    t = real(1) + x / real(9) * t;
+    t = real(1) + x / real(8) * t;
+    t = real(1) + x / real(7) * t;
+    t = real(1) + x / real(6) * t;
+    t = real(1) + x / real(5) * t;
+    t = real(1) + x / real(4) * t;
+    t = real(1) + x / real(3) * t;
+    t = real(1) + x / real(2) * t;
+    // ln(2)/2 to 21 digits.
+    return (x > real(-0.346573590279972654709)) ? x * t : exp(x) - real(1);
+}
+
+// ---------------------------------------------------------------------------------------------
+// (1 - p)^N: the probability that N Bernoulli(p) trials all fail, and its complement
+// P(n >= 1) = 1 - (1 - p)^N. Domain p in [0, 1], N in [0, inf); p is clamped to [0, 1] and N to
+// [0, inf). Three evaluations, measured against each other in docs/pow_one_minus.md.
+
+// KK25 Eq. 25: epsilon = 10^-3.54, KK25 Sec. 6, found optimal for float by the authors.
+GLINT_CONST(real) GLINT_KK25_EPSILON = real(2.8840315031266059e-4);  // 10^-3.54 = 2.88403150312660594e-4 (40-digit decimal)
+
+// pow(1 - p, N) as written. In float it rounds 1 - p to 1 for p < 2^-25 (KK25 Fig. 5b).
+GLINT_FN real glint_pow_one_minus_naive(real p, real N) {
+    p = clamp(p, real(0), real(1));
+    N = max(N, real(0));
+    // pow(0, 0) is undefined in GLSL; the limit used here is 1.
+    return (N == real(0)) ? real(1) : pow(real(1) - p, N);
+}
+
+// KK25 Eq. 25: (1 - c p)^(N / c) with c = max(1, epsilon / p). Biased by the dropped O(p^2)
+// terms of Eq. 24 for p < epsilon; see docs/pow_one_minus.md for the measured error.
+GLINT_FN real glint_pow_one_minus_kk25(real p, real N) {
+    p = clamp(p, real(0), real(1));
+    N = max(N, real(0));
+    real c = max(real(1), GLINT_KK25_EPSILON / max(p, GLINT_FLT_MIN_NORMAL));  // finite for p = 0
+    return (N == real(0)) ? real(1) : pow(real(1) - c * p, N / c);
+}
+
+// exp(N log1p(-p)): exact up to the rounding of log1p, the product and exp.
+GLINT_FN real glint_pow_one_minus_log1p(real p, real N) {
+    p = clamp(p, real(0), real(1));
+    N = max(N, real(0));
+    real q = (p < real(1)) ? p : real(0);  // keeps log finite; p = 1 is selected below
+    real r = exp(N * glint_log1p(-q));
+    return (p < real(1)) ? r : ((N > real(0)) ? real(0) : real(1));
+}
+
+// P(n >= 1) = 1 - pow(1 - p, N) as written.
+GLINT_FN real glint_any_success_naive(real p, real N) {
+    return real(1) - glint_pow_one_minus_naive(p, N);
+}
+
+// P(n >= 1) = 1 - (1 - p)^N as KK25 evaluates it: one minus Eq. 25.
+GLINT_FN real glint_any_success_kk25(real p, real N) {
+    return real(1) - glint_pow_one_minus_kk25(p, N);
+}
+
+// P(n >= 1) = -expm1(N log1p(-p)): keeps full relative precision when N p is small.
+GLINT_FN real glint_any_success_expm1(real p, real N) {
+    p = clamp(p, real(0), real(1));
+    N = max(N, real(0));
+    real q = (p < real(1)) ? p : real(0);
+    real r = -glint_expm1_nonpositive(N * glint_log1p(-q));
+    return (p < real(1)) ? r : ((N > real(0)) ? real(1) : real(0));
+}

@@ -1,0 +1,45 @@
+#include "parity.hpp"
+
+namespace glint_test {
+
+gl_compute& gl() {
+    static gl_compute context;
+    return context;
+}
+
+std::vector<std::uint32_t> map_floats(const std::vector<std::string>& kernels, const std::string& result_type,
+                                      const std::string& expression, const std::vector<float>& x,
+                                      const std::vector<float>& y) {
+    const bool binary = !y.empty();
+    std::string s = shader_header(kernels);
+    s += "layout(std430, binding = 0) readonly buffer In0 { float in0[]; };\n";
+    if (binary) s += "layout(std430, binding = 1) readonly buffer In1 { float in1[]; };\n";
+    s += "layout(std430, binding = " + std::string(binary ? "2" : "1") + ") writeonly buffer Out { " +
+         result_type + " out0[]; };\n";
+    s += "void main() {\n"
+         "  uint n = uint(in0.length());\n"
+         "  for (uint i = gl_GlobalInvocationID.x; i < n; i += gl_NumWorkGroups.x * gl_WorkGroupSize.x) {\n"
+         "    float x = in0[i];\n";
+    if (binary) s += "    float y = in1[i];\n";
+    s += "    out0[i] = " + expression + ";\n  }\n}\n";
+    unsigned prog = gl().program(s);
+    std::vector<std::vector<std::uint32_t>> inputs = {to_words(x)};
+    if (binary) inputs.push_back(to_words(y));
+    return gl().run(prog, inputs, x.size(), x.size());
+}
+
+std::vector<std::uint32_t> map_words(const std::vector<std::string>& kernels, const std::string& body,
+                                     const std::vector<std::uint32_t>& in, std::size_t items,
+                                     std::size_t out_words_per_item) {
+    std::string s = shader_header(kernels);
+    s += "layout(std430, binding = 0) readonly buffer In0 { uint in0[]; };\n"
+         "layout(std430, binding = 1) writeonly buffer Out { uint out0[]; };\n"
+         "void main() {\n"
+         "  uint n = " + std::to_string(items) + "u;\n"
+         "  for (uint i = gl_GlobalInvocationID.x; i < n; i += gl_NumWorkGroups.x * gl_WorkGroupSize.x) {\n" +
+         body + "\n  }\n}\n";
+    unsigned prog = gl().program(s);
+    return gl().run(prog, {in}, items * out_words_per_item, items);
+}
+
+}  // namespace glint_test

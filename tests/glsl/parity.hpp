@@ -1,0 +1,27 @@
+// Helpers for the parity tests: one shared context, and shaders that map input arrays
+// through a GLSL expression.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "gl_compute.hpp"
+
+namespace glint_test {
+
+// The process-wide context (created on first use; a failure to create it fails the test).
+gl_compute& gl();
+
+// Runs `expression` (GLSL, type `result_type`, one output word) over float inputs x[i]
+// (and y[i] when `y` is non-empty), with the given kernel files included.
+std::vector<std::uint32_t> map_floats(const std::vector<std::string>& kernels, const std::string& result_type,
+                                      const std::string& expression, const std::vector<float>& x,
+                                      const std::vector<float>& y = {});
+
+// Runs `body` with `uint i` set to the element index and buffers `uint in0[]` (binding 0) and
+// `uint out0[]` (binding 1) of `out_words_per_item` words per item.
+std::vector<std::uint32_t> map_words(const std::vector<std::string>& kernels, const std::string& body,
+                                     const std::vector<std::uint32_t>& in, std::size_t items,
+                                     std::size_t out_words_per_item);
+
+}  // namespace glint_test

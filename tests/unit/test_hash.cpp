@@ -1,0 +1,80 @@
+// PCG3D and the uniform variates built on it.
+#include <doctest/doctest.h>
+
+#include <algorithm>
+#include <cstdint>
+#include <unordered_set>
+#include <vector>
+
+#include <glint/core.hpp>
+
+namespace {
+
+// PCG3D written out independently of the kernel, word by word, from Jarzynski and Olano 2020
+// (JCGT 9(3), Listing "pcg3d"): the LCG step, two cross-multiply rounds around a xorshift.
+void pcg3d_reference(std::uint32_t& x, std::uint32_t& y, std::uint32_t& z) {
+    const std::uint32_t a = 1664525u, c = 1013904223u;
+    x = x * a + c;
+    y = y * a + c;
+    z = z * a + c;
+    for (int round = 0; round < 2; ++round) {
+        x += y * z;
+        y += z * x;
+        z += x * y;
+        if (round == 0) {
+            x ^= x >> 16;
+            y ^= y >> 16;
+            z ^= z >> 16;
+        }
+    }
+}
+
+}  // namespace
+
+TEST_CASE("pcg3d matches an independent word-by-word implementation on 1e6 inputs") {
+    std::uint32_t state = 12345u;
+    for (int i = 0; i < 1000000; ++i) {
+        // Inputs: small counters (the common case in shaders) and scrambled words.
+        std::uint32_t x = (i % 2) ? static_cast<std::uint32_t>(i) : state * 2654435761u;
+        std::uint32_t y = static_cast<std::uint32_t>(i) ^ 0x9e3779b9u, z = state;
+        state = state * 747796405u + 2891336453u;
+        glm::uvec3 k = glint::pcg3d(glm::uvec3(x, y, z));
+        pcg3d_reference(x, y, z);
+        REQUIRE(k.x == x);
+        REQUIRE(k.y == y);
+        REQUIRE(k.z == z);
+    }
+}
+
+TEST_CASE("pcg3d is injective on a 2^16-point lattice of counters") {
+    std::unordered_set<std::uint64_t> seen;
+    for (std::uint32_t i = 0; i < 256; ++i)
+        for (std::uint32_t j = 0; j < 256; ++j) {
+            glm::uvec3 h = glint::pcg3d(glm::uvec3(i, j, 7u));
+            seen.insert((static_cast<std::uint64_t>(h.x) << 32) ^ h.y ^ (static_cast<std::uint64_t>(h.z) << 11));
+        }
+    CHECK(seen.size() == 65536u);
+}
+
+TEST_CASE("unit_from_bits covers the unit interval in steps of 2^-24, for float and double") {
+    CHECK(glint::unit_from_bits<float>(0u) == 0.0f);
+    CHECK(glint::unit_from_bits<float>(0xffffffffu) == 1.0f - 0x1p-24f);
+    CHECK(glint::unit_from_bits<double>(0xffffffffu) == 1.0 - 0x1p-24);
+    CHECK(glint::unit_from_bits<float>(0x100u) == 0x1p-24f);
+    // Only the top 24 bits matter.
+    CHECK(glint::unit_from_bits<float>(0x123456ffu) == glint::unit_from_bits<float>(0x12345600u));
+}
+
+TEST_CASE("open_unit_from_bits never gives 0 or 1 and is symmetric under bit inversion") {
+    CHECK(glint::open_unit_from_bits<float>(0u) == 0x1p-24f);
+    CHECK(glint::open_unit_from_bits<float>(0xffffffffu) == 1.0f - 0x1p-24f);
+    for (std::uint32_t k = 0; k < (1u << 23); k += 4099u) {
+        std::uint32_t h = k << 9;
+        float u = glint::open_unit_from_bits<float>(h);
+        REQUIRE(u > 0.0f);
+        REQUIRE(u < 1.0f);
+        // (2k + 1) + (2 (2^23 - 1 - k) + 1) = 2^24: u(h) + u(~h) is exactly 1.
+        REQUIRE(u + glint::open_unit_from_bits<float>(~h) == 1.0f);
+        REQUIRE(static_cast<double>(u) == glint::open_unit_from_bits<double>(h));
+    }
+}

@@ -1,5 +1,6 @@
 # Builds and runs an outside project that uses glint (CTest label `consumer`).
-# -DKIND=find_package: install glint into a temporary prefix, then find_package(glint) from it.
+# -DKIND=find_package: install glint into a temporary prefix, then find_package(glint) from it,
+#   for the consumer and for glint's own benchmarks.
 # -DKIND=add_subdirectory: add glint's source tree as a subdirectory.
 cmake_minimum_required(VERSION 3.16)
 
@@ -24,6 +25,10 @@ if(KIND STREQUAL "find_package")
     message(FATAL_ERROR "the kernel files were not installed to share/glint/glsl")
   endif()
   run(${CMAKE_COMMAND} ${common} -S "${consumer_source}" -B "${WORK_DIR}/consumer" -DCMAKE_PREFIX_PATH=${prefix})
+  # The benchmarks build against the installed package too.
+  run(${CMAKE_COMMAND} ${common} -S "${GLINT_SOURCE_DIR}/bench" -B "${WORK_DIR}/bench" -DCMAKE_PREFIX_PATH=${prefix})
+  run(${CMAKE_COMMAND} --build "${WORK_DIR}/bench" --target glint_bench_core)
+  run("${WORK_DIR}/bench/glint_bench_core" --benchmark_filter=pcg3d --benchmark_min_time=0.01)
 elseif(KIND STREQUAL "add_subdirectory")
   run(${CMAKE_COMMAND} ${common} -S "${consumer_source}" -B "${WORK_DIR}/consumer" -DGLINT_SOURCE_DIR=${GLINT_SOURCE_DIR})
 else()

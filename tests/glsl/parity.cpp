@@ -1,5 +1,8 @@
 #include "parity.hpp"
 
+#include <algorithm>
+#include <stdexcept>
+
 namespace glint_test {
 
 gl_compute& gl() {
@@ -40,6 +43,30 @@ std::vector<std::uint32_t> map_words(const std::vector<std::string>& kernels, co
          body + "\n  }\n}\n";
     unsigned prog = gl().program(s);
     return gl().run(prog, {in}, items * out_words_per_item, items);
+}
+
+ulp_stats compare(const std::vector<float>& gpu, const std::vector<float>& cpu) {
+    if (gpu.size() != cpu.size()) throw std::runtime_error("compare: GLSL and C++ result sizes differ");
+    ulp_stats s;
+    s.count = gpu.size();
+    for (std::size_t i = 0; i < gpu.size(); ++i) {
+        const std::int64_t d = ulp_distance(gpu[i], cpu[i]);
+        s.max = std::max(s.max, d);
+        s.differing += d != 0;
+    }
+    return s;
+}
+
+ulp_stats compare(const std::vector<std::uint32_t>& gpu, const std::vector<std::uint32_t>& cpu) {
+    if (gpu.size() != cpu.size()) throw std::runtime_error("compare: GLSL and C++ result sizes differ");
+    ulp_stats s;
+    s.count = gpu.size();
+    for (std::size_t i = 0; i < gpu.size(); ++i) {
+        const std::int64_t d = static_cast<std::int64_t>(gpu[i]) - static_cast<std::int64_t>(cpu[i]);
+        s.max = std::max(s.max, d < 0 ? -d : d);
+        s.differing += d != 0;
+    }
+    return s;
 }
 
 }  // namespace glint_test

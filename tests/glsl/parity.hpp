@@ -24,4 +24,16 @@ std::vector<std::uint32_t> map_words(const std::vector<std::string>& kernels, co
                                      const std::vector<std::uint32_t>& in, std::size_t items,
                                      std::size_t out_words_per_item);
 
+// How far a GLSL result array is from the C++ one: the largest ulp distance, and how many
+// elements differ at all (the mismatch rate). For a discrete sampler the rate counts outcomes
+// flipped by an input within rounding of a decision boundary; tests bound it.
+struct ulp_stats {
+    std::int64_t max = 0;
+    std::size_t differing = 0;
+    std::size_t count = 0;
+    double rate() const { return count ? static_cast<double>(differing) / static_cast<double>(count) : 0.0; }
+};
+ulp_stats compare(const std::vector<float>& gpu, const std::vector<float>& cpu);
+ulp_stats compare(const std::vector<std::uint32_t>& gpu, const std::vector<std::uint32_t>& cpu);
+
 }  // namespace glint_test

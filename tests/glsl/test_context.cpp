@@ -1,6 +1,8 @@
 // The harness itself: a context on llvmpipe, and a shader that must fail to compile does.
 #include <doctest/doctest.h>
 
+#include <cmath>
+#include <limits>
 #include <stdexcept>
 
 #include "parity.hpp"
@@ -29,4 +31,18 @@ TEST_CASE("a dispatch larger than one grid of groups reaches every item") {
     std::size_t wrong = 0;
     for (std::size_t i = 0; i < n; ++i) wrong += out[i] != (static_cast<std::uint32_t>(i) ^ 0x5a5a5a5au);
     CHECK(wrong == 0u);
+}
+
+TEST_CASE("the comparison helpers count ulp distances and mismatches") {
+    using glint_test::compare;
+    const float one_up = std::nextafter(1.0f, 2.0f);
+    auto s = compare(std::vector<float>{1.0f, one_up, -0.0f, 2.0f}, std::vector<float>{1.0f, 1.0f, 0.0f, 2.0f});
+    CHECK(s.count == 4u);
+    CHECK(s.differing == 1u);  // -0 and +0 are the same point
+    CHECK(s.max == 1);
+    CHECK(glint_test::ulp_distance(-std::numeric_limits<float>::denorm_min(), std::numeric_limits<float>::denorm_min()) == 2);
+    auto w = compare(std::vector<std::uint32_t>{3u, 7u}, std::vector<std::uint32_t>{3u, 4u});
+    CHECK(w.differing == 1u);
+    CHECK(w.max == 3);
+    CHECK(w.rate() == doctest::Approx(0.5));
 }

@@ -7,28 +7,25 @@
 // wrong variant (named in the test) must be rejected at the same alpha.
 #include <doctest/doctest.h>
 
-#include <boost/math/distributions/chi_squared.hpp>
 #include <cmath>
 #include <cstdint>
 #include <functional>
 #include <vector>
 
 #include <glint/core.hpp>
+#include <glint/testing/stats.hpp>
 
 namespace {
 
-const double family_alpha = 0.01;
-const int family_size = 3;
-const double alpha = 1.0 - std::pow(1.0 - family_alpha, 1.0 / family_size);
+const double alpha = glint::testing::sidak_alpha(0.01, 3);
 
 // Upper-tail p-value of Pearson's statistic for a histogram against equal expectations.
 double uniform_p_value(const std::vector<std::uint64_t>& counts, std::uint64_t total) {
     const double expected = static_cast<double>(total) / static_cast<double>(counts.size());
-    REQUIRE(expected >= 5.0);  // the chi-square approximation holds; no pooling needed
-    double statistic = 0;
-    for (std::uint64_t c : counts) statistic += (static_cast<double>(c) - expected) * (static_cast<double>(c) - expected) / expected;
-    boost::math::chi_squared dist(static_cast<double>(counts.size() - 1));
-    return boost::math::cdf(boost::math::complement(dist, statistic));
+    REQUIRE(expected >= 5.0);  // the chi-square approximation holds without pooling
+    std::vector<double> observed(counts.begin(), counts.end());
+    std::vector<double> p(counts.size(), 1.0 / static_cast<double>(counts.size()));
+    return glint::testing::chi_square(observed, p).p_value;
 }
 
 using hash_fn = std::function<glm::uvec3(glm::uvec3)>;

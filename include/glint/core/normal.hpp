@@ -20,4 +20,15 @@ real normal_quantile(real u) {
     return detail::glsl::core_kernels<real>::glint_normal_quantile(u);
 }
 
+// erfc(x) (Numerical Recipes' erfcc, relative error below 1.2e-7) and the standard normal CDF.
+template <class real>
+real erfc(real x) {
+    return detail::glsl::core_kernels<real>::glint_erfc(x);
+}
+
+template <class real>
+real normal_cdf(real t) {
+    return detail::glsl::core_kernels<real>::glint_normal_cdf(t);
+}
+
 }  // namespace glint

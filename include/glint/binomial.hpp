@@ -1,0 +1,151 @@
+// Constant-time approximate sampling of the binomial distribution b(N, p) for real N >= 0, as
+// glint renders microfacet counts (kernels/binomial.glsl; GLSL users include core.glsl first).
+//
+// The variants, all taking (N, p, u1, u2) with u1, u2 uniform in (0, 1) (for example from
+// glint::open_unit_from_bits) and returning {positive, negative}:
+//
+//   binomial_ungated      a clamped Gaussian with the binomial's mean and variance
+//   binomial_gated_db23   DB23's gated Gaussian, KK25 Eq. 22 (floored; integer N >= 1)
+//   binomial_gated        KK25 Eq. 23, gated for real N including N < 1; negative = N - positive
+//                         (clamped at 0)
+//   binomial_dual_gated   KK25 Alg. 1, symmetric in positive and negative outcomes
+//   binomial_unbiased     glint's mean-preserving dual-gated sampler (below); the default
+//
+// Domain: N is clamped to [0, inf), p to [0, 1]; u1, u2 should lie in (0, 1) (0 and 1 work but
+// sit on the boundary of the gates and of the quantile's clamp). No variant allocates, throws,
+// or returns NaN or Inf for finite input.
+//
+// Real-valued N. Every variant is exact in distribution at N = 0, 1 and 2 except where noted,
+// and continuous in N. For N < 2 the dual-gated variants dither between the outcomes of the two
+// neighbouring integers (KK25 Fig. 4), so positive + negative may differ from N there; for
+// N > 2, positive + negative = N up to rounding. E[positive] = N p holds for every real N for the
+// dual-gated variants with N <= 2 and for binomial_unbiased everywhere; the target for real N is
+// the randomised-rounding binomial (b(floor N, p) or b(floor N + 1, p) with the fractional part
+// as probability), which glint::testing::binomial_exact samples.
+//
+// The bias of the published variants and its fix. After a gate that guarantees at least one
+// positive and one negative outcome, KK25 Alg. 1 draws the rest from N(1 + (N - 2) p,
+// (N - 2) p (1 - p)) clamped to [1, N - 1]. But the binomial conditioned on 1 <= n <= N - 1 has
+// a different mean, and the clamp at 1 shifts the Gaussian's mean up further: at (N, p) =
+// (100, 1e-2) the dual-gated E[n] is 31% above N p. binomial_unbiased keeps Alg. 1's gates
+// (P(n = 0) = (1 - p)^N and P(n = N) = p^N exactly) and replaces the middle part:
+//
+// 1. Moments of the middle. With A = P(n >= 1) = 1 - (1 - p)^N, the factorial moments
+//    E[n] = N p and E[n (n - 1)] = N (N - 1) p^2 give, for y = n - 1 on M = {1 <= n <= N - 1},
+//    P(M) = A - p^N,
+//    E[y 1_M] = (N p - A) - (N - 1) p^N,
+//    E[y (y - 1) 1_M] = N (N - 1) p^2 - 2 (N p - A) - (N - 1)(N - 2) p^N,
+//    hence m = E[y | M] and v = Var[y | M] in closed form.
+// 2. A one-sided clamped Gaussian with exactly these moments. Measure the offset from the
+//    nearer bound (1, or N - 1 when m is past the middle) and draw it as sigma max(t + Z, 0). For
+//    a standard normal Z, E[max(t + Z, 0)] = psi(t) = t Phi(t) + phi(t) and
+//    E[max(t + Z, 0)^2] = chi(t) = (t^2 + 1) Phi(t) + t phi(t), so the squared coefficient of
+//    variation chi / psi^2 - 1 depends on t alone and decreases monotonically from +inf to 0.
+//    t solves chi(t) / psi(t)^2 - 1 = v / m^2 (a fitted inverse, glint_clamped_gaussian_t) and
+//    sigma = m / psi(t) makes the mean exact whatever t's fit error (which only perturbs the
+//    variance). The atom the clamp puts at the bound plays the role of P(n = 1 | M).
+// 3. The far bound. Capping the offset at N - 2 lowers its mean by sigma psi(t - (N - 2)/sigma);
+//    an affine remap toward the far bound, offset -> (N - 2) - ((N - 2) - offset) k, restores it
+//    exactly. It matters only for small N.
+// The overall mean is then N p^N + P(M) (1 + m) = N p, up to the rounding of the closed forms
+// (about one ulp of N p); the variance matches wherever t's fit does (the far-bound remap
+// shrinks it a little for N below about 10). Measured figures: docs/binomial.md.
+#pragma once
+
+#include "glint/core.hpp"
+#include "glint/detail/kernel_begin.hpp"
+
+namespace glint {
+namespace detail {
+namespace glsl {
+
+template <class real>
+struct binomial_kernels {
+    GLINT_KERNEL_TYPES
+#include "glint/kernels/core.glsl"
+#include "glint/kernels/binomial.glsl"
+};
+
+}  // namespace glsl
+}  // namespace detail
+}  // namespace glint
+
+#include "glint/detail/kernel_end.hpp"
+
+namespace glint {
+
+// {positive, negative} outcome counts.
+template <class real>
+using binomial_result = typename detail::glsl::binomial_kernels<real>::glint_binomial;
+
+template <class real>
+binomial_result<real> binomial_ungated(real N, real p, real u1, real u2) {
+    return detail::glsl::binomial_kernels<real>::glint_binomial_ungated(N, p, u1, u2);
+}
+
+// As published, DB23 evaluates P(n >= 1) as pow(1 - p, N) (method naive).
+template <class real>
+binomial_result<real> binomial_gated_db23(real N, real p, real u1, real u2, pow_method method = pow_method::naive) {
+    return detail::glsl::binomial_kernels<real>::glint_binomial_gated_db23(N, p, u1, u2, static_cast<int>(method));
+}
+
+// As published, KK25 evaluates (1 - p)^N with its Eq. 25 (method kk25).
+template <class real>
+binomial_result<real> binomial_gated(real N, real p, real u1, real u2, pow_method method = pow_method::kk25) {
+    return detail::glsl::binomial_kernels<real>::glint_binomial_gated(N, p, u1, u2, static_cast<int>(method));
+}
+
+template <class real>
+binomial_result<real> binomial_dual_gated(real N, real p, real u1, real u2, pow_method method = pow_method::kk25) {
+    return detail::glsl::binomial_kernels<real>::glint_binomial_dual_gated(N, p, u1, u2, static_cast<int>(method));
+}
+
+template <class real>
+binomial_result<real> binomial_unbiased(real N, real p, real u1, real u2, pow_method method = pow_method::log1p) {
+    return detail::glsl::binomial_kernels<real>::glint_binomial_unbiased(N, p, u1, u2, static_cast<int>(method));
+}
+
+// The variants as a value, for code generic over them (glint::multinomial, tests, benches).
+enum class binomial_variant { ungated, gated_db23, gated, dual_gated, unbiased };
+
+inline const char* name(binomial_variant v) {
+    switch (v) {
+        case binomial_variant::ungated: return "ungated";
+        case binomial_variant::gated_db23: return "gated_db23";
+        case binomial_variant::gated: return "gated";
+        case binomial_variant::dual_gated: return "dual_gated";
+        case binomial_variant::unbiased: break;
+    }
+    return "unbiased";
+}
+
+// The (1 - p)^N evaluation each variant was published with (log1p for glint's own).
+inline pow_method published_pow_method(binomial_variant v) {
+    switch (v) {
+        case binomial_variant::ungated: return pow_method::log1p;  // unused
+        case binomial_variant::gated_db23: return pow_method::naive;
+        case binomial_variant::gated:
+        case binomial_variant::dual_gated: return pow_method::kk25;
+        case binomial_variant::unbiased: break;
+    }
+    return pow_method::log1p;
+}
+
+template <class real>
+binomial_result<real> binomial(binomial_variant v, real N, real p, real u1, real u2, pow_method method) {
+    switch (v) {
+        case binomial_variant::ungated: return binomial_ungated(N, p, u1, u2);
+        case binomial_variant::gated_db23: return binomial_gated_db23(N, p, u1, u2, method);
+        case binomial_variant::gated: return binomial_gated(N, p, u1, u2, method);
+        case binomial_variant::dual_gated: return binomial_dual_gated(N, p, u1, u2, method);
+        case binomial_variant::unbiased: break;
+    }
+    return binomial_unbiased(N, p, u1, u2, method);
+}
+
+template <class real>
+binomial_result<real> binomial(binomial_variant v, real N, real p, real u1, real u2) {
+    return binomial(v, N, p, u1, u2, published_pow_method(v));
+}
+
+}  // namespace glint

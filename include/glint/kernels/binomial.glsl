@@ -1,0 +1,260 @@
+// glint binomial kernels: constant-time approximate sampling of b(N, p) for real N >= 0.
+// Single source for C++ and GLSL 4.50; needs core.glsl. C++ users include <glint/binomial.hpp>,
+// which documents the variants and derives the mean-preserving one.
+//
+// Every sampler takes N (clamped to >= 0), p (clamped to [0, 1]), two uniform variates u1, u2 in
+// (0, 1) (u1 for the gates, u2 for the Gaussian), and returns the number of positive and of
+// negative outcomes as reals. `method` is the (1 - p)^N evaluation (GLINT_POW_*).
+
+struct glint_binomial {
+    real positive;
+    real negative;
+};
+
+GLINT_FN glint_binomial glint_binomial_pair(real positive, real negative) {
+    glint_binomial b;
+    b.positive = positive;
+    b.negative = negative;
+    return b;
+}
+
+// ---------------------------------------------------------------------------------------------
+// The published variants, as published.
+
+// Ungated: a Gaussian with the binomial's mean and variance, clamped to [0, N].
+GLINT_FN glint_binomial glint_binomial_ungated(real N, real p, real u1, real u2) {
+    N = max(N, real(0));
+    p = clamp(p, real(0), real(1));
+    real n = clamp(N * p + sqrt(N * p * (real(1) - p)) * glint_normal_quantile(u2), real(0), N);
+    return glint_binomial_pair(n, N - n);
+}
+
+// DB23's gated Gaussian, KK25 Eq. 22: with probability P(n >= 1) = 1 - (1 - p)^N keep one
+// positive outcome and draw the rest from N(1 + (N - 1) p, (N - 1) p (1 - p)), clamped to [1, N]
+// and floored. Made for integer N >= 1; for N < 1 it returns 0 (the defect KK25 Eq. 23 fixes).
+GLINT_FN glint_binomial glint_binomial_gated_db23(real N, real p, real u1, real u2, int method) {
+    N = max(N, real(0));
+    p = clamp(p, real(0), real(1));
+    real gate = (u1 < glint_any_success(p, N, method)) ? real(1) : real(0);
+    real rest = max(N - real(1), real(0));
+    real g = real(1) + rest * p + sqrt(rest * p * (real(1) - p)) * glint_normal_quantile(u2);
+    real n = floor(gate * min(max(g, real(1)), N));
+    return glint_binomial_pair(n, N - n);
+}
+
+// KK25 Eq. 23, the gated Gaussian for real N >= 0: the gate probability is min(N p, P(n >= 1))
+// (N p for N < 1, KK25 Appendix B) and the Gaussian is clamped to [1, max(N, 1)], without the
+// floor. For N < 1 a gated sample is exactly 1 (one microfacet, present with probability N);
+// the negative count is then max(N - 1, 0) = 0.
+GLINT_FN glint_binomial glint_binomial_gated(real N, real p, real u1, real u2, int method) {
+    N = max(N, real(0));
+    p = clamp(p, real(0), real(1));
+    real n_at_least_1 = max(N, real(1));
+    real gate = (u1 < min(N * p, glint_any_success(p, N, method))) ? real(1) : real(0);
+    real rest = n_at_least_1 - real(1);
+    real g = real(1) + rest * p + sqrt(rest * p * (real(1) - p)) * glint_normal_quantile(u2);
+    real n = gate * clamp(g, real(1), n_at_least_1);
+    return glint_binomial_pair(n, max(N - n, real(0)));
+}
+
+// The gates of KK25 Alg. 1 (lines 2-14), shared by the dual-gated and the mean-preserving
+// samplers: n = positive_fixed + gaussian * G and n_bar = negative_fixed + gaussian * (N2 - G),
+// N2 = max(N, 2), where G in [1, N2 - 1] is the sampler's Gaussian part.
+struct glint_binomial_gates {
+    real positive_fixed;
+    real negative_fixed;
+    real gaussian;  // 1 where the Gaussian part is used, else 0
+};
+
+// `all_positive_n2` = p^N2 and `all_negative_n2` = (1 - p)^N2, as the caller evaluates them.
+GLINT_FN glint_binomial_gates glint_binomial_dual_gates(real N, real p, real u1, real all_positive_n2,
+                                                        real all_negative_n2) {
+    real N2 = max(real(2), N);
+    real weight_2 = clamp(N - real(1), real(0), real(1));        // outcomes of N >= 2
+    real weight_1 = max(real(0), real(1) - abs(real(1) - N));    // outcomes of N = 1
+    real p_all_positive = weight_2 * all_positive_n2;            // line 5
+    real p_all_negative = weight_2 * all_negative_n2;            // line 6
+    real p_one_positive = weight_1 * p;                          // line 7
+    real p_one_negative = weight_1 * (real(1) - p);              // line 8
+    real all_positive = (u1 < p_all_positive) ? real(1) : real(0);                           // line 10
+    real one_or_all_positive = (u1 < p_all_positive + p_one_positive) ? real(1) : real(0);   // line 11
+    real all_negative = (real(1) - p_all_negative <= u1) ? real(1) : real(0);                // line 12
+    real one_or_all_negative = (real(1) - p_all_negative - p_one_negative <= u1) ? real(1) : real(0);  // 13
+    glint_binomial_gates g;
+    g.positive_fixed = all_positive * (N2 - real(1)) + one_or_all_positive;   // line 21
+    g.negative_fixed = all_negative * (N2 - real(1)) + one_or_all_negative;   // line 22
+    g.gaussian = ((N > real(1)) ? real(1) : real(0)) * (real(1) - one_or_all_positive) *
+                 (real(1) - one_or_all_negative);                             // line 14
+    return g;
+}
+
+// KK25 Alg. 1, the dual-gated Gaussian: the Gaussian part is N(1 + (N2 - 2) p, (N2 - 2) p (1 - p))
+// clamped to [1, N2 - 1] (lines 16-19). KK25 evaluates line 6 with Eq. 25 (method GLINT_POW_KK25).
+GLINT_FN glint_binomial glint_binomial_dual_gated(real N, real p, real u1, real u2, int method) {
+    N = max(N, real(0));
+    p = clamp(p, real(0), real(1));
+    real N2 = max(real(2), N);
+    glint_binomial_gates g = glint_binomial_dual_gates(N, p, u1, pow(p, N2), glint_pow_one_minus(p, N2, method));
+    real mu = real(1) + (N2 - real(2)) * p;
+    real sigma = sqrt((N2 - real(2)) * p * (real(1) - p));
+    real G = clamp(mu + sigma * glint_normal_quantile(u2), real(1), N2 - real(1));
+    return glint_binomial_pair(g.positive_fixed + g.gaussian * G, g.negative_fixed + g.gaussian * (N2 - G));
+}
+
+// ---------------------------------------------------------------------------------------------
+// The mean-preserving variant (derivation in glint/binomial.hpp).
+
+// psi(t) = E[max(t + Z, 0)] = t Phi(t) + phi(t) for a standard normal Z.
+GLINT_FN real glint_normal_positive_part_mean(real t) {
+    return max(t * glint_normal_cdf(t) + glint_normal_pdf(t), real(0));
+}
+
+// t such that Var[max(t + Z, 0)] / E[max(t + Z, 0)]^2 = exp(y): the inverse of
+// y(t) = log(chi(t) / psi(t)^2 - 1), chi(t) = E[max(t + Z, 0)^2]. Least-squares polynomial fits
+// made in double by bench/fit_clamped_gaussian.cpp, whose output gives the digits: for y in
+// [-2.2, 7.3] a degree-8 polynomial in (y - 2.55) / 4.75, max |t error| 4.4e-4; for y in
+// (7.3, 35.7] a degree-6 polynomial in (sqrt(y) - 4.3384) / 1.6365, max |t error| 1.5e-6; below
+// -2.2, t = exp(-y / 2), the unclamped limit (relative t error below 1.4e-3); y is clamped to
+// [-40, 35.7] (t from 4.9e8 down to -8).
+GLINT_FN real glint_clamped_gaussian_t(real y) {
+    y = clamp(y, real(-40), real(35.7));
+    real s = (y - real(2.55)) / real(4.75);
+    real a = real(0.1304822196869064);
+    a = real(-0.27358394382870294) + s * a;
+    a = real(0.013247836019274119) + s * a;
+    a = real(0.31032817702901683) + s * a;
+    a = real(-0.094752503176729896) + s * a;
+    a = real(-0.46819370122792325) + s * a;
+    a = real(1.087826679394494) + s * a;
+    a = real(-2.578053376791563) + s * a;
+    a = real(-1.1458385261407047) + s * a;
+    real q = (sqrt(max(y, real(7.3))) - real(4.3383994578685607)) / real(1.6365482406473015);
+    real b = real(0.00060684978664457621);
+    b = real(-0.0021686196695519548) + q * b;
+    b = real(0.0056332391221094883) + q * b;
+    b = real(-0.016333686667123551) + q * b;
+    b = real(0.049776818499077981) + q * b;
+    b = real(-2.472677074787021) + q * b;
+    b = real(-5.5657308993254242) + q * b;
+    return (y < real(-2.2)) ? exp(real(-0.5) * y) : ((y <= real(7.3)) ? a : b);
+}
+
+// Moments of the capped offset O = min(sigma max(t + Z, 0), span) = clamp(mu + sigma Z, 0, span),
+// mu = sigma t, and their derivatives in mu and sigma. With t_far = t - span / sigma:
+// E[O] = sigma (psi(t) - psi(t_far)),
+// E[O^2] = sigma^2 (chi(t) - chi(t_far)) - 2 span sigma psi(t_far),
+// dE[O]/dmu = Phi(t) - Phi(t_far), dE[O]/dsigma = phi(t) - phi(t_far),
+// dE[O^2]/dmu = 2 (E[O] - span Phi(t_far)),
+// dE[O^2]/dsigma = 2 (mu (phi(t) - phi(t_far)) + sigma (Phi(t) - Phi(t_far) - t phi(t) + t_far phi(t_far))),
+// where psi(t) = t Phi(t) + phi(t) and chi(t) = (t^2 + 1) Phi(t) + t phi(t).
+struct glint_capped_moments {
+    real mean;
+    real square_mean;
+    real dmean_dmu;
+    real dmean_dsigma;
+    real dsquare_dmu;
+    real dsquare_dsigma;
+};
+
+GLINT_FN glint_capped_moments glint_capped_offset_moments(real t, real sigma, real span) {
+    real t_far = max(t - span / max(sigma, real(1e-30)), real(-40));
+    real cdf = glint_normal_cdf(t), pdf = glint_normal_pdf(t);
+    real cdf_far = glint_normal_cdf(t_far), pdf_far = glint_normal_pdf(t_far);
+    real psi = t * cdf + pdf, psi_far = t_far * cdf_far + pdf_far;
+    real chi = (t * t + real(1)) * cdf + t * pdf, chi_far = (t_far * t_far + real(1)) * cdf_far + t_far * pdf_far;
+    glint_capped_moments c;
+    c.mean = max(sigma * (psi - psi_far), real(0));
+    c.square_mean = max(sigma * sigma * (chi - chi_far) - real(2) * span * sigma * psi_far, real(0));
+    c.dmean_dmu = cdf - cdf_far;
+    c.dmean_dsigma = pdf - pdf_far;
+    c.dsquare_dmu = real(2) * (c.mean - span * cdf_far);
+    c.dsquare_dsigma = real(2) * (sigma * t * (pdf - pdf_far) + sigma * (cdf - cdf_far - t * pdf + t_far * pdf_far));
+    return c;
+}
+
+// The parameters of the mean-preserving sampler's middle part for N > 2 (they do not depend on
+// u1, u2; tests evaluate its closed-form distribution from them). The middle part is
+// G = 1 + offset (lower = 1) or G = N - 1 - offset (lower = 0), offset = min(sigma max(t + s, 0),
+// span) remapped by far_scale, s = +-Z.
+struct glint_binomial_middle {
+    real all_positive;   // p^N
+    real all_negative;   // (1 - p)^N
+    real lower;          // 1: offsets count up from n = 1; 0: down from n = N - 1
+    real t;              // where the clamp cuts the Gaussian, in standard deviations
+    real sigma;          // the Gaussian's scale
+    real span;           // N - 2, the largest offset
+    real far_scale;      // keeps the mean when the far bound caps the offset: k > 0 maps
+                         // offset -> span - (span - offset) k, k < 0 maps offset -> offset |k|
+};
+
+GLINT_FN glint_binomial_middle glint_binomial_unbiased_setup(real N, real p, int method) {
+    N = max(N, real(2));
+    glint_binomial_middle q;
+    q.all_positive = pow(p, N);
+    q.all_negative = glint_pow_one_minus(p, N, method);
+    real any = glint_any_success(p, N, method);
+    real middle = max(any - q.all_positive, real(0));            // P(1 <= n <= N - 1)
+    real inv_middle = (middle > real(0)) ? real(1) / middle : real(0);
+    // Moments of y = n - 1 on the middle, from the binomial's factorial moments:
+    // E[(n - 1) 1_mid] = (N p - P(n >= 1)) - (N - 1) p^N,
+    // E[(n - 1)(n - 2) 1_mid] = N (N - 1) p^2 - 2 (N p - P(n >= 1)) - (N - 1)(N - 2) p^N.
+    real excess = N * p - any;
+    real mean_y = max(excess - (N - real(1)) * q.all_positive, real(0)) * inv_middle;
+    real factorial_y = max(N * (N - real(1)) * p * p - real(2) * excess - (N - real(1)) * (N - real(2)) * q.all_positive,
+                           real(0)) * inv_middle;
+    real var_y = max(factorial_y + mean_y - mean_y * mean_y, real(0));
+    q.span = N - real(2);
+    q.lower = (mean_y <= real(0.5) * q.span) ? real(1) : real(0);
+    real offset_mean = clamp((q.lower > real(0.5)) ? mean_y : q.span - mean_y, real(0), q.span);
+    // Choose (t, sigma) so that max(sigma (t + Z), 0) has mean offset_mean and variance var_y.
+    real tiny = GLINT_FLT_MIN_NORMAL;
+    q.t = glint_clamped_gaussian_t(log(max(var_y, tiny)) - real(2) * log(max(offset_mean, tiny)));
+    q.sigma = offset_mean / max(glint_normal_positive_part_mean(q.t), tiny);
+    // The far bound caps the offset at span. Where it can be reached (small N), refine (t, sigma)
+    // by Newton's method so that min(sigma max(t + Z, 0), span) has the target mean and variance
+    // (moments and their derivatives in closed form from Phi and phi at t and t_far), then
+    // restore the mean exactly with an affine remap of the offset (far_scale).
+    real t_far = max(q.t - q.span / max(q.sigma, real(1e-30)), real(-40));
+    real capped_mean = offset_mean;
+    if (t_far > real(-9)) {
+        for (int i = 0; i < 3; ++i) {
+            glint_capped_moments c = glint_capped_offset_moments(q.t, q.sigma, q.span);
+            real f1 = c.mean - offset_mean;
+            real f2 = c.square_mean - (var_y + offset_mean * offset_mean);
+            real det = c.dmean_dmu * c.dsquare_dsigma - c.dmean_dsigma * c.dsquare_dmu;
+            if (!(abs(det) > tiny)) break;
+            real dmu = (-f1 * c.dsquare_dsigma + f2 * c.dmean_dsigma) / det;
+            real dsigma = (-f2 * c.dmean_dmu + f1 * c.dsquare_dmu) / det;
+            real mu = q.sigma * q.t + dmu;
+            q.sigma = max(q.sigma + dsigma, real(0.5) * q.sigma);
+            q.t = mu / q.sigma;
+        }
+        capped_mean = glint_capped_offset_moments(q.t, q.sigma, q.span).mean;
+    }
+    // offset -> span - (span - offset) k raises the mean (k <= 1); offset -> offset k lowers it.
+    q.far_scale = (capped_mean < offset_mean) ? (q.span - offset_mean) / max(q.span - capped_mean, tiny)
+                                              : -offset_mean / max(capped_mean, tiny);
+    return q;
+}
+
+// The middle part G in [1, N2 - 1] for a uniform u2.
+GLINT_FN real glint_binomial_unbiased_middle(glint_binomial_middle q, real N2, real u2) {
+    real z = glint_normal_quantile(u2);
+    real s = (q.lower > real(0.5)) ? z : -z;  // mirrored, so that p -> 1 - p, u2 -> 1 - u2 swaps n and n_bar
+    real offset = min(q.sigma * max(q.t + s, real(0)), q.span);
+    offset = (q.far_scale >= real(0)) ? q.span - (q.span - offset) * q.far_scale : -offset * q.far_scale;
+    return (q.lower > real(0.5)) ? real(1) + offset : (N2 - real(1)) - offset;
+}
+
+// The mean-preserving dual-gated sampler: KK25 Alg. 1's gates (exact for N <= 2), and for N > 2
+// a middle part whose mean is E[n | 1 <= n <= N - 1] exactly and whose variance matches the
+// binomial's on that event (glint/binomial.hpp derives it).
+GLINT_FN glint_binomial glint_binomial_unbiased(real N, real p, real u1, real u2, int method) {
+    N = max(N, real(0));
+    p = clamp(p, real(0), real(1));
+    real N2 = max(real(2), N);
+    glint_binomial_middle q = glint_binomial_unbiased_setup(N2, p, method);
+    glint_binomial_gates g = glint_binomial_dual_gates(N, p, u1, q.all_positive, q.all_negative);
+    real G = glint_binomial_unbiased_middle(q, N2, u2);
+    return glint_binomial_pair(g.positive_fixed + g.gaussian * G, g.negative_fixed + g.gaussian * (N2 - G));
+}

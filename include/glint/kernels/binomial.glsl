@@ -185,6 +185,7 @@ struct glint_binomial_middle {
     real span;           // N - 2, the largest offset
     real far_scale;      // keeps the mean when the far bound caps the offset: k > 0 maps
                          // offset -> span - (span - offset) k, k < 0 maps offset -> offset |k|
+    real two_point;      // for span <= 1 (N <= 3): offset = span with this probability, else 0
 };
 
 GLINT_FN glint_binomial_middle glint_binomial_unbiased_setup(real N, real p, int method) {
@@ -192,20 +193,38 @@ GLINT_FN glint_binomial_middle glint_binomial_unbiased_setup(real N, real p, int
     glint_binomial_middle q;
     q.all_positive = pow(p, N);
     q.all_negative = glint_pow_one_minus(p, N, method);
-    real any = glint_any_success(p, N, method);
-    real middle = max(any - q.all_positive, real(0));            // P(1 <= n <= N - 1)
-    real inv_middle = (middle > real(0)) ? real(1) / middle : real(0);
-    // Moments of y = n - 1 on the middle, from the binomial's factorial moments:
-    // E[(n - 1) 1_mid] = (N p - P(n >= 1)) - (N - 1) p^N,
-    // E[(n - 1)(n - 2) 1_mid] = N (N - 1) p^2 - 2 (N p - P(n >= 1)) - (N - 1)(N - 2) p^N.
-    real excess = N * p - any;
-    real mean_y = max(excess - (N - real(1)) * q.all_positive, real(0)) * inv_middle;
-    real factorial_y = max(N * (N - real(1)) * p * p - real(2) * excess - (N - real(1)) * (N - real(2)) * q.all_positive,
-                           real(0)) * inv_middle;
-    real var_y = max(factorial_y + mean_y - mean_y * mean_y, real(0));
     q.span = N - real(2);
-    q.lower = (mean_y <= real(0.5) * q.span) ? real(1) : real(0);
-    real offset_mean = clamp((q.lower > real(0.5)) ? mean_y : q.span - mean_y, real(0), q.span);
+    // Work from the nearer end: count y = (near count) - 1, where the near count is n for
+    // p <= 1/2 and n_bar otherwise, with success probability p_near <= 1/2. This keeps every
+    // formula below free of cancellation at both ends and makes the sampler symmetric.
+    q.lower = (p <= real(0.5)) ? real(1) : real(0);
+    real p_near = (q.lower > real(0.5)) ? p : real(1) - p;
+    real none_near = (q.lower > real(0.5)) ? q.all_negative : q.all_positive;  // P(near count = 0)
+    real all_near = (q.lower > real(0.5)) ? q.all_positive : q.all_negative;   // P(near count = N)
+    real any_near = glint_any_success(p_near, N, method);                        // P(near count >= 1)
+    real middle = max(any_near - all_near, real(0));                             // P(1 <= n <= N - 1)
+    real inv_middle = (middle > real(0)) ? real(1) / middle : real(0);
+    real mean_near = N * p_near;
+    // E[y 1_mid] = (N p - P(n >= 1)) - (N - 1) p^N, from E[n] = N p.
+    real excess = mean_near - any_near;
+    real mean_y = max(excess - (N - real(1)) * all_near, real(0)) * inv_middle;
+    // Var[y | mid] two ways, each free of cancellation where it is used. Small means: from the
+    // factorial moment E[(n - 1)(n - 2) 1_mid] = N (N - 1) p^2 - 2 (N p - P(n >= 1))
+    // - (N - 1)(N - 2) p^N. Large means: from the law of total variance over {n = 0, mid, n = N},
+    // N p (1 - p) = P0 (N p)^2 + PN (N (1 - p))^2 + P_mid (Var_mid + (E_mid - N p)^2), with
+    // E_mid - N p = (N p P0 - N (1 - p) PN) / P_mid.
+    real factorial_y = max(N * (N - real(1)) * p_near * p_near - real(2) * excess -
+                               (N - real(1)) * (N - real(2)) * all_near, real(0)) * inv_middle;
+    real var_small = factorial_y + mean_y - mean_y * mean_y;
+    real mean_far = N * (real(1) - p_near);
+    real shift = (mean_near * none_near - mean_far * all_near) * inv_middle;
+    real var_large = (mean_near * (real(1) - p_near) - none_near * mean_near * mean_near -
+                      all_near * mean_far * mean_far - middle * shift * shift) * inv_middle;
+    real var_y = max((mean_y < real(1)) ? var_small : var_large, real(0));
+    real offset_mean = clamp(mean_y, real(0), q.span);
+    // N <= 3: the middle holds at most two counts, 1 and N - 1, and a Bernoulli with the right mean
+    // is exact at N = 3 (and continuous down to N = 2, where it becomes the single count 1).
+    q.two_point = (q.span > real(0)) ? offset_mean / q.span : real(0);
     // Choose (t, sigma) so that max(sigma (t + Z), 0) has mean offset_mean and variance var_y.
     real tiny = GLINT_FLT_MIN_NORMAL;
     q.t = glint_clamped_gaussian_t(log(max(var_y, tiny)) - real(2) * log(max(offset_mean, tiny)));
@@ -239,10 +258,12 @@ GLINT_FN glint_binomial_middle glint_binomial_unbiased_setup(real N, real p, int
 
 // The middle part G in [1, N2 - 1] for a uniform u2.
 GLINT_FN real glint_binomial_unbiased_middle(glint_binomial_middle q, real N2, real u2) {
-    real z = glint_normal_quantile(u2);
-    real s = (q.lower > real(0.5)) ? z : -z;  // mirrored, so that p -> 1 - p, u2 -> 1 - u2 swaps n and n_bar
-    real offset = min(q.sigma * max(q.t + s, real(0)), q.span);
+    // Mirrored for the upper end, so that p -> 1 - p, u2 -> 1 - u2 swaps n and n_bar.
+    real u_near = (q.lower > real(0.5)) ? u2 : real(1) - u2;
+    real z = glint_normal_quantile(u_near);
+    real offset = min(q.sigma * max(q.t + z, real(0)), q.span);
     offset = (q.far_scale >= real(0)) ? q.span - (q.span - offset) * q.far_scale : -offset * q.far_scale;
+    offset = (q.span <= real(1)) ? ((u_near >= real(1) - q.two_point) ? q.span : real(0)) : offset;
     return (q.lower > real(0.5)) ? real(1) + offset : (N2 - real(1)) - offset;
 }
 

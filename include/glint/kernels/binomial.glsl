@@ -185,7 +185,7 @@ struct glint_binomial_middle {
     real span;           // N - 2, the largest offset
     real far_scale;      // keeps the mean when the far bound caps the offset: k > 0 maps
                          // offset -> span - (span - offset) k, k < 0 maps offset -> offset |k|
-    real two_point;      // for span <= 1 (N <= 3): offset = span with this probability, else 0
+    real two_point;      // the two-point law used up to N = 3: offset = span with this probability
 };
 
 GLINT_FN glint_binomial_middle glint_binomial_unbiased_setup(real N, real p, int method) {
@@ -224,6 +224,7 @@ GLINT_FN glint_binomial_middle glint_binomial_unbiased_setup(real N, real p, int
     real offset_mean = clamp(mean_y, real(0), q.span);
     // N <= 3: the middle holds at most two counts, 1 and N - 1, and a Bernoulli with the right mean
     // is exact at N = 3 (and continuous down to N = 2, where it becomes the single count 1).
+    // glint_binomial_unbiased_middle blends it into the Gaussian law between N = 3 and 4.
     q.two_point = (q.span > real(0)) ? offset_mean / q.span : real(0);
     // Choose (t, sigma) so that max(sigma (t + Z), 0) has mean offset_mean and variance var_y.
     real tiny = GLINT_FLT_MIN_NORMAL;
@@ -263,7 +264,11 @@ GLINT_FN real glint_binomial_unbiased_middle(glint_binomial_middle q, real N2, r
     real z = glint_normal_quantile(u_near);
     real offset = min(q.sigma * max(q.t + z, real(0)), q.span);
     offset = (q.far_scale >= real(0)) ? q.span - (q.span - offset) * q.far_scale : -offset * q.far_scale;
-    offset = (q.span <= real(1)) ? ((u_near >= real(1) - q.two_point) ? q.span : real(0)) : offset;
+    // Up to N = 3 the middle is the two-point law of counts 1 and N - 1 (exact at N = 3); from N = 3
+    // to 4 it blends into the Gaussian law comonotonically (same u), which keeps the mean and the
+    // law continuous in N.
+    real two_point = (u_near >= real(1) - q.two_point) ? q.span : real(0);
+    offset = mix(two_point, offset, clamp(q.span - real(1), real(0), real(1)));
     return (q.lower > real(0.5)) ? real(1) + offset : (N2 - real(1)) - offset;
 }
 

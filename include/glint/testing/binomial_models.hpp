@@ -5,7 +5,9 @@
 // makes a floored clamped Gaussian; model::cdf, mean and variance are exact for those forms.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
+#include <type_traits>
 #include <vector>
 
 #include "glint/binomial.hpp"
@@ -131,71 +133,124 @@ private:
     }
 };
 
-// The closed-form distribution of `variant` at (N, p), with (1 - p)^N evaluated by `method` in
-// double.
-inline binomial_model model_of(binomial_variant variant, double N, double p, pow_method method) {
-    using k = glint::detail::glsl::binomial_kernels<double>;
+// The closed-form distribution of `variant` at (N, p), with (1 - p)^N evaluated by `method`.
+// With real = double it is the variant's own law, its probabilities evaluated accurately in
+// double. With real = float it is the law of the float kernel: every parameter is computed as
+// the float kernel computes it, and each gate's probability is the width of the interval of u1
+// that its float comparisons select (so 1 - (1 - P) rounded in float, where the kernel tests
+// 1 - P <= u1).
+template <class real = double>
+binomial_model model_of(binomial_variant variant, double N_in, double p_in, pow_method method) {
+    using k = glint::detail::glsl::binomial_kernels<real>;
+    constexpr bool as_float = std::is_same<real, float>::value;
     const int m = static_cast<int>(method);
-    N = std::max(N, 0.0);
-    p = std::min(std::max(p, 0.0), 1.0);
+    const real Nr = std::max(static_cast<real>(N_in), real(0)), pr = std::min(std::max(static_cast<real>(p_in), real(0)), real(1));
+    const double N = static_cast<double>(Nr), p = static_cast<double>(pr);
+    // P(u1 < a) and P(u1 >= 1 - b) for thresholds computed in `real`.
+    auto below = [](real a) { return std::min(std::max(static_cast<double>(a), 0.0), 1.0); };
+    auto at_or_above_one_minus = [&](real b) {
+        return as_float ? std::min(std::max(1.0 - static_cast<double>(real(1) - b), 0.0), 1.0) : std::min(std::max(static_cast<double>(b), 0.0), 1.0);
+    };
     binomial_model d;
     switch (variant) {
-        case binomial_variant::ungated:
-            d.add_clamped_gaussian(1, N * p, std::sqrt(N * p * (1 - p)), 0, N);
+        case binomial_variant::ungated: {
+            const real sd = std::sqrt(Nr * pr * (real(1) - pr));
+            d.add_clamped_gaussian(1, static_cast<double>(Nr * pr), static_cast<double>(sd), 0, N);
             break;
+        }
         case binomial_variant::gated_db23: {
-            const double gate = k::glint_any_success(p, N, m), rest = std::max(N - 1, 0.0);
+            const double gate = below(k::glint_any_success(pr, Nr, m));
+            const real rest = std::max(Nr - real(1), real(0));
             d.atoms.push_back({0, 1 - gate});
             if (N < 1) d.atoms.push_back({0, gate});
-            else d.floor_part = {gate, 1 + rest * p, std::sqrt(rest * p * (1 - p)), N};
+            else d.floor_part = {gate, static_cast<double>(real(1) + rest * pr), static_cast<double>(std::sqrt(rest * pr * (real(1) - pr))), N};
             break;
         }
         case binomial_variant::gated: {
-            const double gate = std::min(N * p, k::glint_any_success(p, N, m)), top = std::max(N, 1.0), rest = top - 1;
+            const real top = std::max(Nr, real(1)), rest = top - real(1);
+            const double gate = below(std::min(Nr * pr, k::glint_any_success(pr, Nr, m)));
             d.atoms.push_back({0, 1 - gate});
-            d.add_clamped_gaussian(gate, 1 + rest * p, std::sqrt(rest * p * (1 - p)), 1, top);
+            d.add_clamped_gaussian(gate, static_cast<double>(real(1) + rest * pr), static_cast<double>(std::sqrt(rest * pr * (real(1) - pr))), 1,
+                                   static_cast<double>(top));
             break;
         }
         case binomial_variant::dual_gated:
         case binomial_variant::unbiased: {
-            const double N2 = std::max(N, 2.0), weight_2 = std::min(std::max(N - 1, 0.0), 1.0),
-                         weight_1 = std::max(0.0, 1 - std::fabs(1 - N));
-            if (N <= 2) {  // KK25 Fig. 4: the outcomes of N = 1 and N = 2, both variants alike
-                const double two = weight_2 * p * p, one = weight_1 * p + weight_2 * 2 * p * (1 - p);
-                d.atoms.push_back({2, two});
-                d.atoms.push_back({1, one});
-                d.atoms.push_back({0, 1 - two - one});
+            const real N2 = std::max(Nr, real(2)), weight_2 = std::min(std::max(Nr - real(1), real(0)), real(1)),
+                       weight_1 = std::max(real(0), real(1) - std::fabs(real(1) - Nr));
+            typename k::glint_binomial_middle q{};
+            real all_positive, all_negative;
+            if (variant == binomial_variant::unbiased) {
+                q = k::glint_binomial_unbiased_setup(N2, pr, m);
+                all_positive = q.all_positive, all_negative = q.all_negative;
+            } else {
+                all_positive = std::pow(pr, N2), all_negative = k::glint_pow_one_minus(pr, N2, m);
+            }
+            // The gates of KK25 Alg. 1 as intervals of u1 (lines 10-14).
+            const real a = weight_2 * all_positive, b = a + weight_1 * pr;
+            const real c = weight_2 * all_negative, e = c + weight_1 * (real(1) - pr);
+            const double p_all_positive = below(a), p_positive_gate = below(b);
+            const double p_all_negative = at_or_above_one_minus(c), p_negative_gate = at_or_above_one_minus(e);
+            double p_middle = Nr > real(1) ? std::max(1.0 - p_positive_gate - p_negative_gate, 0.0) : 0.0;
+            if (!as_float) {
+                // Accurately, without the cancellation of 1 - P(n = 0) - P(n = N).
+                p_middle = N > 2 ? std::max(static_cast<double>(k::glint_any_success(pr, N2, m)) - p_all_positive, 0.0)
+                                 : static_cast<double>(weight_2) * 2 * p * (1 - p);
+            }
+            if (N <= 2) {  // KK25 Fig. 4: the outcomes of N = 1 and N = 2; the middle is n = 1
+                d.atoms.push_back({2, p_all_positive});
+                d.atoms.push_back({1, p_positive_gate - p_all_positive + p_middle});
+                d.atoms.push_back({0, std::max(1 - p_positive_gate - p_middle, 0.0)});
                 break;
             }
+            d.atoms.push_back({N, p_all_positive});
+            d.atoms.push_back({0, p_all_negative});
             if (variant == binomial_variant::dual_gated) {
-                const double all_positive = std::pow(p, N), all_negative = k::glint_pow_one_minus(p, N, m);
-                d.atoms.push_back({N, all_positive});
-                d.atoms.push_back({0, all_negative});
-                // P(middle) = P(n >= 1) - p^N, with P(n >= 1) as the method evaluates it.
-                d.add_clamped_gaussian(std::max(k::glint_any_success(p, N, m) - all_positive, 0.0), 1 + (N - 2) * p, std::sqrt((N - 2) * p * (1 - p)), 1, N - 1);
+                const real rest = N2 - real(2);
+                d.add_clamped_gaussian(p_middle, static_cast<double>(real(1) + rest * pr), static_cast<double>(std::sqrt(rest * pr * (real(1) - pr))), 1,
+                                       N - 1);
                 break;
             }
-            const auto q = k::glint_binomial_unbiased_setup(N2, p, m);
-            const double weight = std::max(k::glint_any_success(p, N, m) - q.all_positive, 0.0);
-            d.atoms.push_back({N, q.all_positive});
-            d.atoms.push_back({0, q.all_negative});
-            // offset o = clamp(sigma (t + s), 0, span), remapped to a + b o.
-            const double a = q.far_scale >= 0 ? q.span * (1 - q.far_scale) : 0.0, b = std::fabs(q.far_scale);
-            const bool lower = q.lower > 0.5;
+            const bool lower = q.lower > real(0.5);
+            const double span = static_cast<double>(q.span), t = static_cast<double>(q.t), sigma = static_cast<double>(q.sigma);
+            const double ks = static_cast<double>(q.far_scale), pi = static_cast<double>(q.two_point);
+            const double w = std::min(std::max(span - 1, 0.0), 1.0);
+            const double a0 = ks >= 0 ? span * (1 - ks) : 0.0, b0 = std::fabs(ks);
             auto place = [&](double offset) { return lower ? 1 + offset : N - 1 - offset; };
-            if (q.span <= 1) {  // two counts, 1 and N - 1
-                d.atoms.push_back({place(0), weight * (1 - q.two_point)});
-                d.atoms.push_back({place(q.span), weight * q.two_point});
-                break;
-            }
-            const double at_zero = q.sigma > 0 ? binomial_model::phi_cdf(-q.t) : 1.0;
-            const double at_span = q.sigma > 0 ? binomial_model::phi_cdf(q.t - q.span / q.sigma) : 0.0;
-            d.atoms.push_back({place(a), weight * at_zero});
-            d.atoms.push_back({place(a + b * q.span), weight * at_span});
-            if (q.sigma > 0 && b > 0 && q.span > 0) {
-                const double mu = a + b * q.sigma * q.t, sd = b * q.sigma;
-                if (lower) d.segments.push_back({weight, 1 + mu, sd, 1 + a, 1 + a + b * q.span});
-                else d.segments.push_back({weight, N - 1 - mu, sd, N - 1 - a - b * q.span, N - 1 - a});
+            // The offset as a function of u = u_near: O(u) = w G(u) + (1 - w) span [u >= u_split],
+            // with G the Gaussian law's quantile function: a0 on [0, u_a), a0 + b0 sigma (t + z(u)) on
+            // [u_a, u_b), a0 + b0 span on [u_b, 1].
+            const double u_split = 1 - pi;
+            const double u_a = sigma > 0 ? binomial_model::phi_cdf(-t) : 1.0;
+            const double u_b = sigma > 0 ? 1 - binomial_model::phi_cdf(t - span / sigma) : 1.0;
+            auto z_of = [](double u) {  // the standard normal quantile, by bisection on the CDF
+                if (u <= 0) return -40.0;
+                if (u >= 1) return 40.0;
+                double lo = -40, hi = 40;
+                for (int i = 0; i < 200; ++i) {
+                    const double mid = 0.5 * (lo + hi);
+                    (binomial_model::phi_cdf(mid) < u ? lo : hi) = mid;
+                }
+                return 0.5 * (lo + hi);
+            };
+            for (int side = 0; side < 2; ++side) {  // u below and above u_split
+                const double from = side ? u_split : 0.0, to = side ? 1.0 : u_split, shift = side ? (1 - w) * span : 0.0;
+                if (to <= from) continue;
+                const double atom_lo = std::max(0.0, std::min(u_a, to) - from), atom_hi = std::max(0.0, to - std::max(u_b, from));
+                if (atom_lo > 0) d.atoms.push_back({place(shift + w * a0), p_middle * atom_lo});
+                if (atom_hi > 0) d.atoms.push_back({place(shift + w * (a0 + b0 * span)), p_middle * atom_hi});
+                const double s_lo = std::max(u_a, from), s_hi = std::min(u_b, to);
+                if (s_hi <= s_lo) continue;
+                const double mu = shift + w * (a0 + b0 * sigma * t), sd = w * b0 * sigma;
+                if (!(sd > 0)) {
+                    d.atoms.push_back({place(mu), p_middle * (s_hi - s_lo)});
+                    continue;
+                }
+                // Clipped to the offset's range: z_of saturates at +-40 where Phi underflows.
+                const double x_lo = std::max(mu + sd * z_of(s_lo), shift + w * a0);
+                const double x_hi = std::min(mu + sd * z_of(s_hi), shift + w * (a0 + b0 * span));
+                if (lower) d.segments.push_back({p_middle, 1 + mu, sd, 1 + x_lo, 1 + x_hi});
+                else d.segments.push_back({p_middle, N - 1 - mu, sd, N - 1 - x_hi, N - 1 - x_lo});
             }
             break;
         }

@@ -11,7 +11,7 @@
 //   binomial_dual_gated   KK25 Alg. 1, symmetric in positive and negative outcomes
 //   binomial_unbiased     glint's mean-preserving dual-gated sampler (below); the default
 //
-// Domain: N is clamped to [0, inf), p to [0, 1]; u1, u2 should lie in (0, 1) (0 and 1 work but
+// Domain: N is clamped to [0, inf) (binomial_unbiased: [0, 1e18]), p to [0, 1]; u1, u2 should lie in (0, 1) (0 and 1 work but
 // sit on the boundary of the gates and of the quantile's clamp). No variant allocates, throws,
 // or returns NaN or Inf for finite input.
 //
@@ -78,9 +78,10 @@ namespace glint {
 template <class real>
 using binomial_result = typename detail::glsl::binomial_kernels<real>::glint_binomial;
 
+// u1 is not used; the parameter keeps the variants interchangeable.
 template <class real>
-binomial_result<real> binomial_ungated(real N, real p, real u1, real u2) {
-    return detail::glsl::binomial_kernels<real>::glint_binomial_ungated(N, p, u1, u2);
+binomial_result<real> binomial_ungated(real N, real p, real /*u1*/, real u2) {
+    return detail::glsl::binomial_kernels<real>::glint_binomial_ungated(N, p, u2);
 }
 
 // As published, DB23 evaluates P(n >= 1) as pow(1 - p, N) (method naive).

@@ -100,7 +100,7 @@ TEST_CASE("dual-gated variants are exact at N = 0, 1, 2 and keep E = N p for rea
     for (binomial_variant v : {binomial_variant::dual_gated, binomial_variant::unbiased})
         for (double N : {0.0, 1e-3, 0.5, 1.0, 1.5, 2.0})
             for (double p : {1e-6, 0.1, 0.5, 0.9}) {
-                CAPTURE(glint::name(v));
+                CAPTURE(std::string(glint::name(v)));
                 CAPTURE(N);
                 CAPTURE(p);
                 const auto d = distance(v, N, p);

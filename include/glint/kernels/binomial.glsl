@@ -21,8 +21,8 @@ GLINT_FN glint_binomial glint_binomial_pair(real positive, real negative) {
 // ---------------------------------------------------------------------------------------------
 // The published variants, as published.
 
-// Ungated: a Gaussian with the binomial's mean and variance, clamped to [0, N].
-GLINT_FN glint_binomial glint_binomial_ungated(real N, real p, real u1, real u2) {
+// Ungated: a Gaussian with the binomial's mean and variance, clamped to [0, N]. Needs only u2.
+GLINT_FN glint_binomial glint_binomial_ungated(real N, real p, real u2) {
     N = max(N, real(0));
     p = clamp(p, real(0), real(1));
     real n = clamp(N * p + sqrt(N * p * (real(1) - p)) * glint_normal_quantile(u2), real(0), N);
@@ -172,6 +172,10 @@ GLINT_FN glint_capped_moments glint_capped_offset_moments(real t, real sigma, re
     return c;
 }
 
+// The mean-preserving sampler clamps N to 1e18: its moments square N, and (1e18)^2 is still far
+// below the float range (3.4e38).
+GLINT_CONST(real) GLINT_BINOMIAL_MAX_N = real(1e18);
+
 // The parameters of the mean-preserving sampler's middle part for N > 2 (they do not depend on
 // u1, u2; tests evaluate its closed-form distribution from them). The middle part is
 // G = 1 + offset (lower = 1) or G = N - 1 - offset (lower = 0), offset = min(sigma max(t + s, 0),
@@ -189,7 +193,7 @@ struct glint_binomial_middle {
 };
 
 GLINT_FN glint_binomial_middle glint_binomial_unbiased_setup(real N, real p, int method) {
-    N = max(N, real(2));
+    N = clamp(N, real(2), GLINT_BINOMIAL_MAX_N);
     glint_binomial_middle q;
     q.all_positive = pow(p, N);
     q.all_negative = glint_pow_one_minus(p, N, method);
@@ -203,7 +207,7 @@ GLINT_FN glint_binomial_middle glint_binomial_unbiased_setup(real N, real p, int
     real all_near = (q.lower > real(0.5)) ? q.all_positive : q.all_negative;   // P(near count = N)
     real any_near = glint_any_success(p_near, N, method);                        // P(near count >= 1)
     real middle = max(any_near - all_near, real(0));                             // P(1 <= n <= N - 1)
-    real inv_middle = (middle > real(0)) ? real(1) / middle : real(0);
+    real inv_middle = (middle >= GLINT_FLT_MIN_NORMAL) ? real(1) / middle : real(0);  // 1 / denormal overflows
     real mean_near = N * p_near;
     // E[y 1_mid] = (N p - P(n >= 1)) - (N - 1) p^N, from E[n] = N p.
     real excess = mean_near - any_near;
@@ -252,8 +256,11 @@ GLINT_FN glint_binomial_middle glint_binomial_unbiased_setup(real N, real p, int
         capped_mean = glint_capped_offset_moments(q.t, q.sigma, q.span).mean;
     }
     // offset -> span - (span - offset) k raises the mean (k <= 1); offset -> offset k lowers it.
+    // Only where Newton left the mean off by more than 1e-5 relative: the remap's rounding noise
+    // would otherwise make the count jitter non-monotonically in p by an ulp.
     q.far_scale = (capped_mean < offset_mean) ? (q.span - offset_mean) / max(q.span - capped_mean, tiny)
                                               : -offset_mean / max(capped_mean, tiny);
+    q.far_scale = (abs(capped_mean - offset_mean) <= real(1e-5) * offset_mean) ? real(1) : q.far_scale;
     return q;
 }
 
@@ -276,7 +283,7 @@ GLINT_FN real glint_binomial_unbiased_middle(glint_binomial_middle q, real N2, r
 // a middle part whose mean is E[n | 1 <= n <= N - 1] exactly and whose variance matches the
 // binomial's on that event (glint/binomial.hpp derives it).
 GLINT_FN glint_binomial glint_binomial_unbiased(real N, real p, real u1, real u2, int method) {
-    N = max(N, real(0));
+    N = clamp(N, real(0), GLINT_BINOMIAL_MAX_N);
     p = clamp(p, real(0), real(1));
     real N2 = max(real(2), N);
     glint_binomial_middle q = glint_binomial_unbiased_setup(N2, p, method);

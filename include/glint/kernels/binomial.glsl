@@ -190,6 +190,7 @@ struct glint_binomial_middle {
     real far_scale;      // keeps the mean when the far bound caps the offset: k > 0 maps
                          // offset -> span - (span - offset) k, k < 0 maps offset -> offset |k|
     real two_point;      // the two-point law used up to N = 3: offset = span with this probability
+    real center;         // where the Gaussian is centred in counts: 1 + sigma t, or N - 1 - sigma t
 };
 
 GLINT_FN glint_binomial_middle glint_binomial_unbiased_setup(real N, real p, int method) {
@@ -261,6 +262,7 @@ GLINT_FN glint_binomial_middle glint_binomial_unbiased_setup(real N, real p, int
     q.far_scale = (capped_mean < offset_mean) ? (q.span - offset_mean) / max(q.span - capped_mean, tiny)
                                               : -offset_mean / max(capped_mean, tiny);
     q.far_scale = (abs(capped_mean - offset_mean) <= real(1e-5) * offset_mean) ? real(1) : q.far_scale;
+    q.center = (q.lower > real(0.5)) ? real(1) + q.sigma * q.t : (N - real(1)) - q.sigma * q.t;
     return q;
 }
 
@@ -269,14 +271,22 @@ GLINT_FN real glint_binomial_unbiased_middle(glint_binomial_middle q, real N2, r
     // Mirrored for the upper end, so that p -> 1 - p, u2 -> 1 - u2 swaps n and n_bar.
     real u_near = (q.lower > real(0.5)) ? u2 : real(1) - u2;
     real z = glint_normal_quantile(u_near);
-    real offset = min(q.sigma * max(q.t + z, real(0)), q.span);
-    offset = (q.far_scale >= real(0)) ? q.span - (q.span - offset) * q.far_scale : -offset * q.far_scale;
+    real offset = min(max(q.sigma * q.t + q.sigma * z, real(0)), q.span);
+    // Written so that far_scale = 1 is exactly the identity (span - (span - o) rounds o to ulp(span)).
+    offset = (q.far_scale >= real(0)) ? offset * q.far_scale + q.span * (real(1) - q.far_scale) : -offset * q.far_scale;
     // Up to N = 3 the middle is the two-point law of counts 1 and N - 1 (exact at N = 3); from N = 3
     // to 4 it blends into the Gaussian law comonotonically (same u), which keeps the mean and the
     // law continuous in N.
     real two_point = (u_near >= real(1) - q.two_point) ? q.span : real(0);
     offset = mix(two_point, offset, clamp(q.span - real(1), real(0), real(1)));
-    return (q.lower > real(0.5)) ? real(1) + offset : (N2 - real(1)) - offset;
+    real small_n = (q.lower > real(0.5)) ? real(1) + offset : (N2 - real(1)) - offset;
+    // Where neither the far bound nor the blend acts (all but small N), the same value as one
+    // rounding of center + sigma z: at N = 1e16 a count's ulp is most of a standard deviation, and
+    // rounding the offset first and then adding it to 1 or subtracting it from N - 1 would round
+    // twice.
+    real s = (q.lower > real(0.5)) ? z : -z;
+    real large_n = clamp(q.center + q.sigma * s, real(1), N2 - real(1));
+    return (q.far_scale == real(1) && q.span >= real(2)) ? large_n : small_n;
 }
 
 // The mean-preserving dual-gated sampler: KK25 Alg. 1's gates (exact for N <= 2), and for N > 2

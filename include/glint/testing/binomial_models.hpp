@@ -220,6 +220,10 @@ binomial_model model_of(binomial_variant variant, double N_in, double p_in, pow_
             // The offset as a function of u = u_near: O(u) = w G(u) + (1 - w) span [u >= u_split],
             // with G the Gaussian law's quantile function: a0 on [0, u_a), a0 + b0 sigma (t + z(u)) on
             // [u_a, u_b), a0 + b0 span on [u_b, 1].
+            if (ks == 1 && span >= 2) {  // the kernel's single-rounding form: clamp(center +- sigma z, 1, N - 1)
+                d.add_clamped_gaussian(p_middle, static_cast<double>(q.center), sigma, 1, N - 1);
+                break;
+            }
             const double u_split = 1 - pi;
             const double u_a = sigma > 0 ? binomial_model::phi_cdf(-t) : 1.0;
             const double u_b = sigma > 0 ? 1 - binomial_model::phi_cdf(t - span / sigma) : 1.0;

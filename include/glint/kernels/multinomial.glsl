@@ -1,0 +1,115 @@
+// glint multinomial kernel: N trials over K = 2..8 bins with probabilities p[0..K-1] (their sum
+// at most 1; the remainder is an implicit rest bin, KK25 Eq. 17's dummy light for masking and
+// directions below the horizon), sampled as a binary hierarchy of binomials (KK25 Sec. 6).
+// Single source for C++ and GLSL 4.50; needs core.glsl and binomial.glsl.
+//
+// The root splits the K bins from the rest, each inner node splits its bins into halves; K - 1
+// binomials for the bins and one for the rest, so K = 8 costs 8 binomials against 4 for K = 4.
+// The root uses the chosen variant as it is (for N < 2 the dual-gated variants dither, KK25
+// Fig. 4). Below the root a node's count is split conservatively, so that the counts always sum
+// to the root's positive count: a node holding N_node >= 2 gives its left half the variant's
+// positive count and its right half the remainder; a node holding less than 2 (a real count
+// such as 1.37, or 0 or 1) sends all of it left with probability q and right otherwise, which is
+// exact for N_node = 0 and 1 and keeps the mean N_node q for any real N_node.
+
+// Variant codes, as glint::binomial_variant.
+GLINT_CONST(int) GLINT_BINOMIAL_UNGATED = 0;
+GLINT_CONST(int) GLINT_BINOMIAL_GATED_DB23 = 1;
+GLINT_CONST(int) GLINT_BINOMIAL_GATED = 2;
+GLINT_CONST(int) GLINT_BINOMIAL_DUAL_GATED = 3;
+GLINT_CONST(int) GLINT_BINOMIAL_UNBIASED = 4;
+
+GLINT_FN glint_binomial glint_binomial_variant(int variant, real N, real p, real u1, real u2, int method) {
+    if (variant == GLINT_BINOMIAL_UNGATED) return glint_binomial_ungated(N, p, u2);
+    if (variant == GLINT_BINOMIAL_GATED_DB23) return glint_binomial_gated_db23(N, p, u1, u2, method);
+    if (variant == GLINT_BINOMIAL_GATED) return glint_binomial_gated(N, p, u1, u2, method);
+    if (variant == GLINT_BINOMIAL_DUAL_GATED) return glint_binomial_dual_gated(N, p, u1, u2, method);
+    return glint_binomial_unbiased(N, p, u1, u2, method);
+}
+
+struct glint_multinomial_probabilities {
+    real p[8];
+};
+
+struct glint_multinomial_counts {
+    real count[8];
+    real rest;  // trials that fell in none of the K bins
+};
+
+// The uniform pair for tree node `node` (0 = root) from the seed: one PCG3D hash.
+GLINT_FN vec2 glint_multinomial_uniforms(uvec3 seed, int node) {
+    uvec3 h = glint_pcg3d(uvec3(seed.x, seed.y, seed.z + uint(node) * 0x9e3779b9u));
+    return vec2(glint_open_unit_from_bits(h.x), glint_open_unit_from_bits(h.y));
+}
+
+// N trials over K bins (K clamped to 2..8; probabilities clamped to >= 0 and scaled down if
+// they sum to more than 1). `variant` is a GLINT_BINOMIAL_* code, `method` a GLINT_POW_* code,
+// `seed` any three words (a hash of the pixel, the grid vertex and the frame).
+GLINT_FN glint_multinomial_counts glint_multinomial(real N, glint_multinomial_probabilities probs, int K, uvec3 seed,
+                                                   int variant, int method) {
+    K = clamp(K, 2, 8);
+    N = max(N, real(0));
+    real total = real(0);
+    for (int k = 0; k < 8; ++k) {
+        probs.p[k] = (k < K) ? max(probs.p[k], real(0)) : real(0);
+        total += probs.p[k];
+    }
+    real scale = (total > real(1)) ? real(1) / total : real(1);
+    for (int k = 0; k < 8; ++k) probs.p[k] *= scale;
+    total = min(total * scale, real(1));
+
+    glint_multinomial_counts result;
+    for (int k = 0; k < 8; ++k) result.count[k] = real(0);
+    // Root: the K bins against the rest.
+    vec2 u = glint_multinomial_uniforms(seed, 0);
+    glint_binomial root = glint_binomial_variant(variant, N, total, u.x, u.y, method);
+    result.rest = root.negative;
+
+    // Breadth-first over the inner nodes [lo, hi) of the bins, at most K - 1 = 7 of them; a node's
+    // inner children are appended to the queue, its leaves written out. (GLSL has no recursion.)
+    int queue_lo[8];
+    int queue_hi[8];
+    real queue_n[8];
+    queue_lo[0] = 0;
+    queue_hi[0] = K;
+    queue_n[0] = root.positive;
+    int tail = 1;
+    for (int head = 0; head < 7; ++head) {
+        if (head >= tail) break;
+        int lo = queue_lo[head];
+        int hi = queue_hi[head];
+        real n = queue_n[head];
+        int mid = lo + (hi - lo) / 2;
+        real left = real(0);
+        real right = real(0);
+        for (int k = 0; k < 8; ++k) {
+            left += (k >= lo && k < mid) ? probs.p[k] : real(0);
+            right += (k >= mid && k < hi) ? probs.p[k] : real(0);
+        }
+        real q = (left + right > real(0)) ? clamp(left / (left + right), real(0), real(1)) : real(0.5);
+        vec2 v = glint_multinomial_uniforms(seed, head + 1);
+        real n_left = (v.x < q) ? n : real(0);  // below 2: all of it to one side
+        if (n >= real(2)) {
+            glint_binomial split = glint_binomial_variant(variant, n, q, v.x, v.y, method);
+            n_left = clamp(split.positive, real(0), n);
+        }
+        real n_right = n - n_left;
+        if (mid - lo == 1) {
+            result.count[lo] = n_left;
+        } else {
+            queue_lo[tail] = lo;
+            queue_hi[tail] = mid;
+            queue_n[tail] = n_left;
+            ++tail;
+        }
+        if (hi - mid == 1) {
+            result.count[mid] = n_right;
+        } else {
+            queue_lo[tail] = mid;
+            queue_hi[tail] = hi;
+            queue_n[tail] = n_right;
+            ++tail;
+        }
+    }
+    return result;
+}

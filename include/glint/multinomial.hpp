@@ -11,6 +11,7 @@
 #pragma once
 
 #include <array>
+#include <cstddef>
 
 #include "glint/binomial.hpp"
 #include "glint/detail/kernel_begin.hpp"
@@ -35,29 +36,29 @@ struct multinomial_kernels {
 
 namespace glint {
 
-template <class real, int K>
+template <class real, std::size_t K>
 struct multinomial_result {
     std::array<real, K> count;
     real rest;
 };
 
-template <int K, class real>
+template <std::size_t K, class real>
 multinomial_result<real, K> multinomial(real N, const std::array<real, K>& p, glm::uvec3 seed,
                                         binomial_variant variant = binomial_variant::unbiased) {
     static_assert(K >= 2 && K <= 8, "glint::multinomial: K must be 2..8");
     return multinomial<K, real>(N, p, seed, variant, published_pow_method(variant));
 }
 
-template <int K, class real>
+template <std::size_t K, class real>
 multinomial_result<real, K> multinomial(real N, const std::array<real, K>& p, glm::uvec3 seed, binomial_variant variant,
                                         pow_method method) {
     static_assert(K >= 2 && K <= 8, "glint::multinomial: K must be 2..8");
     using k = detail::glsl::multinomial_kernels<real>;
     typename k::glint_multinomial_probabilities probs;
-    for (int i = 0; i < 8; ++i) probs.p[i] = i < K ? p[static_cast<std::size_t>(i)] : real(0);
-    const auto c = k::glint_multinomial(N, probs, K, seed, static_cast<int>(variant), static_cast<int>(method));
+    for (std::size_t i = 0; i < 8; ++i) probs.p[i] = i < K ? p[i] : real(0);
+    const auto c = k::glint_multinomial(N, probs, static_cast<int>(K), seed, static_cast<int>(variant), static_cast<int>(method));
     multinomial_result<real, K> r;
-    for (int i = 0; i < K; ++i) r.count[static_cast<std::size_t>(i)] = c.count[i];
+    for (std::size_t i = 0; i < K; ++i) r.count[i] = c.count[i];
     r.rest = c.rest;
     return r;
 }

@@ -1,0 +1,77 @@
+// Multinomial sampling: conservation, non-negative counts, K = 2..8, every variant, hard inputs.
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <string>
+
+#include <glint/multinomial.hpp>
+
+using glint::binomial_variant;
+
+namespace {
+
+template <std::size_t K>
+void check_conservation(binomial_variant v) {
+    double worst_ulps = 0;
+    for (float N : {2.5f, 3.0f, 5.0f, 10.0f, 100.0f, 1e4f, 1e6f, 1e9f, 1e16f})
+        for (std::uint32_t trial = 0; trial < 400; ++trial) {
+            std::array<float, K> p;
+            const glm::uvec3 h = glint::pcg3d(glm::uvec3(trial, static_cast<std::uint32_t>(K), 0x77u));
+            // Probabilities from 1e-12 to ~0.3, and some exact zeros.
+            for (std::size_t k = 0; k < K; ++k) {
+                const float u = glint::unit_from_bits<float>(glint::pcg3d(glm::uvec3(h.x, h.y, static_cast<std::uint32_t>(k))).z);
+                p[k] = (u < 0.1f) ? 0.0f : std::pow(10.0f, -12.0f * u) / static_cast<float>(K);
+            }
+            const auto c = glint::multinomial<K>(N, p, glm::uvec3(trial, 5u, 9u), v);
+            double sum = static_cast<double>(c.rest);
+            REQUIRE(c.rest >= 0);
+            for (float x : c.count) {
+                REQUIRE(x >= 0);
+                REQUIRE(std::isfinite(x));
+                sum += static_cast<double>(x);
+            }
+            const double ulp = static_cast<double>(std::nextafter(N, 2 * N) - N);
+            worst_ulps = std::max(worst_ulps, std::fabs(sum - static_cast<double>(N)) / ulp);
+        }
+    MESSAGE("K = " << K << ", " << std::string(glint::name(v)) << ": counts + rest within " << worst_ulps << " ulp of N");
+    CHECK(worst_ulps <= 1.0);
+}
+
+}  // namespace
+
+TEST_CASE("counts and rest sum to N within one ulp for N > 2, for K = 2..8 and the conserving variants") {
+    for (binomial_variant v : {binomial_variant::dual_gated, binomial_variant::unbiased, binomial_variant::gated,
+                               binomial_variant::ungated}) {
+        CAPTURE(std::string(glint::name(v)));
+        check_conservation<2>(v);
+        check_conservation<3>(v);
+        check_conservation<4>(v);
+        check_conservation<5>(v);
+        check_conservation<8>(v);
+    }
+}
+
+TEST_CASE("N below 2 dithers at the root as KK25 does and stays non-negative") {
+    for (float N : {0.0f, 1e-3f, 0.5f, 1.0f, 1.5f, 2.0f})
+        for (std::uint32_t trial = 0; trial < 1000; ++trial) {
+            const auto c = glint::multinomial<4>(N, std::array<float, 4>{0.1f, 0.2f, 0.3f, 0.15f}, glm::uvec3(trial, 1u, 1u));
+            float sum = c.rest;
+            for (float x : c.count) {
+                CHECK(x >= 0);
+                CHECK(x == std::floor(x));  // integer outcomes below 2
+                sum += x;
+            }
+            CHECK(sum <= 2.0f);
+        }
+}
+
+TEST_CASE("bad probabilities are tamed: negative as 0, a sum above 1 scaled down, NaN-free") {
+    const auto c = glint::multinomial<4>(1e6f, std::array<float, 4>{-1.0f, 3.0f, 1.0f, 0.0f}, glm::uvec3(1u, 2u, 3u));
+    CHECK(c.count[0] == 0.0f);
+    CHECK(c.count[3] == 0.0f);
+    CHECK(c.rest == 0.0f);
+    CHECK(c.count[1] + c.count[2] == doctest::Approx(1e6f));
+    CHECK(c.count[1] / 1e6f == doctest::Approx(0.75).epsilon(0.01));
+    const auto d = glint::multinomial<8>(1e16f, std::array<float, 8>{}, glm::uvec3(4u, 5u, 6u));
+    CHECK(d.rest == 1e16f);
+}

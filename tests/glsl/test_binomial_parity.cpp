@@ -1,0 +1,116 @@
+// The binomial and multinomial kernels through Mesa llvmpipe against the C++ float path on the
+// same inputs. The builtins pow, exp, log and sqrt differ by a few ulp between the two, so a
+// continuous count differs by a few ulp, and a discrete decision (a gate, the clamp, the
+// two-point middle) may flip where an input sits within those ulp of its threshold: such flips
+// are counted and their rate is bounded.
+#include <doctest/doctest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include <glint/binomial.hpp>
+#include <glint/multinomial.hpp>
+#include <glint/testing/binomial_metrics.hpp>
+
+#include "parity.hpp"
+#include "tolerances.hpp"
+
+using glint::binomial_variant;
+namespace gt = glint::testing;
+
+namespace {
+
+struct parity {
+    std::size_t count = 0, identical = 0, flips = 0;
+    double max_difference = 0;  // over the counts that did not flip, relative to max(N, 1)
+};
+
+// A count is identical, or differs by rounding (below 1e-4 of max(N, 1)), or flipped.
+void tally(parity& s, float gpu, float cpu, float N) {
+    ++s.count;
+    const double d = std::fabs(static_cast<double>(gpu) - static_cast<double>(cpu)) / std::max(static_cast<double>(N), 1.0);
+    s.identical += gpu == cpu;
+    if (d > 1e-4) ++s.flips;
+    else s.max_difference = std::max(s.max_difference, d);
+}
+
+}  // namespace
+
+TEST_CASE("binomial kernels: GLSL against C++ over the grid, 256 uniform pairs per point, every variant") {
+    std::vector<std::uint32_t> in;
+    std::vector<float> Ns, ps, u1s, u2s;
+    for (double N : gt::binomial_grid_n())
+        for (double p : gt::binomial_grid_p())
+            for (std::uint32_t s = 0; s < 256; ++s) {
+                const glm::uvec3 h = glint::pcg3d(glm::uvec3(s, 0x9au, static_cast<std::uint32_t>(Ns.size())));
+                Ns.push_back(static_cast<float>(N)), ps.push_back(static_cast<float>(p));
+                u1s.push_back(glint::open_unit_from_bits<float>(h.x)), u2s.push_back(glint::open_unit_from_bits<float>(h.y));
+            }
+    for (std::size_t i = 0; i < Ns.size(); ++i)
+        for (float f : {Ns[i], ps[i], u1s[i], u2s[i]}) in.push_back(glint_test::to_words(std::vector<float>{f})[0]);
+    for (binomial_variant v : {binomial_variant::ungated, binomial_variant::gated_db23, binomial_variant::gated,
+                               binomial_variant::dual_gated, binomial_variant::unbiased}) {
+        const int method = static_cast<int>(glint::published_pow_method(v));
+        const std::string body =
+            "float N = uintBitsToFloat(in0[4u*i]), p = uintBitsToFloat(in0[4u*i+1u]);"
+            " float u1 = uintBitsToFloat(in0[4u*i+2u]), u2 = uintBitsToFloat(in0[4u*i+3u]);"
+            " glint_binomial r = glint_binomial_variant(" + std::to_string(static_cast<int>(v)) + ", N, p, u1, u2, " +
+            std::to_string(method) + ");"
+            " out0[2u*i] = floatBitsToUint(r.positive); out0[2u*i+1u] = floatBitsToUint(r.negative);";
+        const auto gpu = glint_test::from_words<float>(
+            glint_test::map_words({"core.glsl", "binomial.glsl", "multinomial.glsl"}, body, in, Ns.size(), 2));
+        parity s;
+        std::size_t non_finite = 0;
+        for (std::size_t i = 0; i < Ns.size(); ++i) {
+            const auto c = glint::binomial(v, Ns[i], ps[i], u1s[i], u2s[i]);
+            non_finite += !std::isfinite(gpu[2 * i]) || !std::isfinite(gpu[2 * i + 1]);
+            tally(s, gpu[2 * i], c.positive, Ns[i]);
+            tally(s, gpu[2 * i + 1], c.negative, Ns[i]);
+        }
+        const double rate = static_cast<double>(s.flips) / static_cast<double>(s.count);
+        MESSAGE(std::string(glint::name(v)) << ": " << s.count << " counts, " << s.identical << " identical, " << s.flips
+                                            << " flipped (rate " << rate << "), the others within " << s.max_difference << " of max(N, 1)");
+        CHECK(non_finite == 0u);
+        CHECK(rate <= BINOMIAL_GLSL_MAX_FLIP_RATE);
+        CHECK(s.max_difference <= BINOMIAL_GLSL_MAX_DIFFERENCE);
+    }
+}
+
+TEST_CASE("multinomial kernel: GLSL against C++, K = 4 and 8") {
+    for (int K : {4, 8}) {
+        const std::size_t n = 65536;
+        std::vector<std::uint32_t> in;
+        std::vector<float> Ns;
+        for (std::size_t i = 0; i < n; ++i) {
+            const float N = std::pow(10.0f, -2.0f + 18.0f * glint::unit_from_bits<float>(glint::pcg3d(glm::uvec3(static_cast<std::uint32_t>(i), 3u, 3u)).x));
+            Ns.push_back(N);
+            in.push_back(glint_test::to_words(std::vector<float>{N})[0]);
+        }
+        std::string body = "glint_multinomial_probabilities pr;";
+        for (int k = 0; k < 8; ++k) body += " pr.p[" + std::to_string(k) + "] = " + std::to_string(0.8 * (k + 1) / (K * (K + 1) / 2)) + ";";
+        body += " glint_multinomial_counts c = glint_multinomial(uintBitsToFloat(in0[i]), pr, " + std::to_string(K) +
+                ", uvec3(i, 7u, 1u), 4, 2);"
+                " for (int k = 0; k < 8; ++k) out0[9u*i+uint(k)] = floatBitsToUint(c.count[k]);"
+                " out0[9u*i+8u] = floatBitsToUint(c.rest);";
+        const auto gpu = glint_test::from_words<float>(
+            glint_test::map_words({"core.glsl", "binomial.glsl", "multinomial.glsl"}, body, in, n, 9));
+        parity s;
+        for (std::size_t i = 0; i < n; ++i) {
+            std::array<float, 8> p{};
+            for (int k = 0; k < 8; ++k) p[static_cast<std::size_t>(k)] = static_cast<float>(0.8 * (k + 1) / (K * (K + 1) / 2));
+            using kern = glint::detail::glsl::multinomial_kernels<float>;
+            kern::glint_multinomial_probabilities pr;
+            for (int k = 0; k < 8; ++k) pr.p[k] = p[static_cast<std::size_t>(k)];
+            const auto c = kern::glint_multinomial(Ns[i], pr, K, glm::uvec3(static_cast<std::uint32_t>(i), 7u, 1u), 4, 2);
+            for (int k = 0; k < 8; ++k) tally(s, gpu[9 * i + static_cast<std::size_t>(k)], c.count[k], Ns[i]);
+            tally(s, gpu[9 * i + 8], c.rest, Ns[i]);
+        }
+        const double rate = static_cast<double>(s.flips) / static_cast<double>(s.count);
+        MESSAGE("K = " << K << ": " << s.count << " counts, " << s.identical << " identical, " << s.flips << " flipped (rate "
+                       << rate << "), the others within " << s.max_difference << " of max(N, 1)");
+        CHECK(rate <= BINOMIAL_GLSL_MAX_FLIP_RATE);
+        CHECK(s.max_difference <= BINOMIAL_GLSL_MAX_DIFFERENCE);
+    }
+}

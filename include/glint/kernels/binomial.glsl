@@ -175,6 +175,8 @@ GLINT_FN glint_capped_moments glint_capped_offset_moments(real t, real sigma, re
 // The mean-preserving sampler clamps N to 1e18: its moments square N, and (1e18)^2 is still far
 // below the float range (3.4e38).
 GLINT_CONST(real) GLINT_BINOMIAL_MAX_N = real(1e18);
+// Newton steps for the small-N middle, at most (it stops once converged).
+GLINT_CONST(int) GLINT_BINOMIAL_NEWTON_STEPS = 3;
 
 // The parameters of the mean-preserving sampler's middle part for N > 2 (they do not depend on
 // u1, u2; tests evaluate its closed-form distribution from them). The middle part is
@@ -193,20 +195,48 @@ struct glint_binomial_middle {
     real center;         // where the Gaussian is centred in counts: 1 + sigma t, or N - 1 - sigma t
 };
 
-GLINT_FN glint_binomial_middle glint_binomial_unbiased_setup(real N, real p, int method) {
-    N = clamp(N, real(2), GLINT_BINOMIAL_MAX_N);
+// The probabilities of the ends, P(n = 0) and P(n = N), and P(near count >= 1), for N >= 2.
+// The mean-preserving sampler works from the nearer end: the near count is n for p <= 1/2 and
+// n_bar otherwise, with success probability p_near <= 1/2, which keeps every formula free of
+// cancellation at both ends and makes the sampler symmetric.
+struct glint_binomial_ends {
+    real all_positive;  // p^N
+    real all_negative;  // (1 - p)^N
+    real any_near;      // P(near count >= 1)
+    real lower;         // 1 for p <= 1/2
+};
+
+GLINT_FN glint_binomial_ends glint_binomial_unbiased_ends(real N, real p, int method) {
+    glint_binomial_ends e;
+    e.lower = (p <= real(0.5)) ? real(1) : real(0);
+    real p_near = (e.lower > real(0.5)) ? p : real(1) - p;
+    if (method == GLINT_POW_LOG1P) {
+        // One log1p per end: x = log P(near count = 0), x_far = log P(near count = N).
+        real x = N * glint_log1p(-p_near);
+        real x_far = N * glint_log1p(-(real(1) - p_near));
+        real none_near = exp(x);
+        real all_near = exp(x_far);
+        e.any_near = (x > real(-0.346573590279972654709)) ? -glint_expm1_nonpositive(x) : real(1) - none_near;
+        e.all_positive = (e.lower > real(0.5)) ? all_near : none_near;
+        e.all_negative = (e.lower > real(0.5)) ? none_near : all_near;
+    } else {
+        e.all_positive = pow(p, N);
+        e.all_negative = glint_pow_one_minus(p, N, method);
+        e.any_near = glint_any_success(p_near, N, method);
+    }
+    return e;
+}
+
+GLINT_FN glint_binomial_middle glint_binomial_unbiased_middle_setup(real N, real p, glint_binomial_ends e) {
     glint_binomial_middle q;
-    q.all_positive = pow(p, N);
-    q.all_negative = glint_pow_one_minus(p, N, method);
+    q.all_positive = e.all_positive;
+    q.all_negative = e.all_negative;
+    q.lower = e.lower;
     q.span = N - real(2);
-    // Work from the nearer end: count y = (near count) - 1, where the near count is n for
-    // p <= 1/2 and n_bar otherwise, with success probability p_near <= 1/2. This keeps every
-    // formula below free of cancellation at both ends and makes the sampler symmetric.
-    q.lower = (p <= real(0.5)) ? real(1) : real(0);
     real p_near = (q.lower > real(0.5)) ? p : real(1) - p;
     real none_near = (q.lower > real(0.5)) ? q.all_negative : q.all_positive;  // P(near count = 0)
     real all_near = (q.lower > real(0.5)) ? q.all_positive : q.all_negative;   // P(near count = N)
-    real any_near = glint_any_success(p_near, N, method);                        // P(near count >= 1)
+    real any_near = e.any_near;                                                  // P(near count >= 1)
     real middle = max(any_near - all_near, real(0));                             // P(1 <= n <= N - 1)
     real inv_middle = (middle >= GLINT_FLT_MIN_NORMAL) ? real(1) / middle : real(0);  // 1 / denormal overflows
     real mean_near = N * p_near;
@@ -232,29 +262,44 @@ GLINT_FN glint_binomial_middle glint_binomial_unbiased_setup(real N, real p, int
     // glint_binomial_unbiased_middle blends it into the Gaussian law between N = 3 and 4.
     q.two_point = (q.span > real(0)) ? offset_mean / q.span : real(0);
     // Choose (t, sigma) so that max(sigma (t + Z), 0) has mean offset_mean and variance var_y.
+    // Where the mean is 6 or more standard deviations from the bound the clamp removes less than
+    // Phi(-6) = 1e-9 of the mass: then t = mean / sd and sigma = sd, as the fit would give to within
+    // 1e-9 relative, without its log, exp and erfc.
     real tiny = GLINT_FLT_MIN_NORMAL;
-    q.t = glint_clamped_gaussian_t(log(max(var_y, tiny)) - real(2) * log(max(offset_mean, tiny)));
-    q.sigma = offset_mean / max(glint_normal_positive_part_mean(q.t), tiny);
-    // The far bound caps the offset at span. Where it can be reached (small N), refine (t, sigma)
-    // by Newton's method so that min(sigma max(t + Z, 0), span) has the target mean and variance
-    // (moments and their derivatives in closed form from Phi and phi at t and t_far), then
-    // restore the mean exactly with an affine remap of the offset (far_scale).
+    real sd = sqrt(var_y);
+    if (q.span <= real(1)) {  // N <= 3: the two-point law alone
+        q.sigma = real(0);
+        q.t = real(0);
+    } else if (offset_mean >= real(6) * sd) {
+        q.sigma = sd;
+        q.t = offset_mean / max(sd, tiny);
+    } else {
+        q.t = glint_clamped_gaussian_t(log(max(var_y, tiny)) - real(2) * log(max(offset_mean, tiny)));
+        q.sigma = offset_mean / max(glint_normal_positive_part_mean(q.t), tiny);
+    }
+    // The far bound caps the offset at span. Where it removes more than psi(-5) = 5e-8 of the
+    // offset's mean (small N), refine (t, sigma) by Newton's method so that
+    // min(sigma max(t + Z, 0), span) has the target mean and variance (moments and derivatives in
+    // closed form from Phi and phi at t and t_far), then restore the mean exactly with an affine
+    // remap of the offset (far_scale).
     real t_far = max(q.t - q.span / max(q.sigma, real(1e-30)), real(-40));
     real capped_mean = offset_mean;
-    if (t_far > real(-9)) {
-        for (int i = 0; i < 3; ++i) {
+    if (t_far > real(-5) && q.span > real(1)) {
+        for (int i = 0; i <= GLINT_BINOMIAL_NEWTON_STEPS; ++i) {
             glint_capped_moments c = glint_capped_offset_moments(q.t, q.sigma, q.span);
+            capped_mean = c.mean;
             real f1 = c.mean - offset_mean;
             real f2 = c.square_mean - (var_y + offset_mean * offset_mean);
             real det = c.dmean_dmu * c.dsquare_dsigma - c.dmean_dsigma * c.dsquare_dmu;
-            if (!(abs(det) > tiny)) break;
+            // Stop once the mean is within 1e-6 and the second moment within 1e-4, relative.
+            bool converged = abs(f1) <= real(1e-6) * offset_mean && abs(f2) <= real(1e-4) * (var_y + offset_mean * offset_mean);
+            if (converged || i == GLINT_BINOMIAL_NEWTON_STEPS || !(abs(det) > tiny)) break;
             real dmu = (-f1 * c.dsquare_dsigma + f2 * c.dmean_dsigma) / det;
             real dsigma = (-f2 * c.dmean_dmu + f1 * c.dsquare_dmu) / det;
             real mu = q.sigma * q.t + dmu;
             q.sigma = max(q.sigma + dsigma, real(0.5) * q.sigma);
             q.t = mu / q.sigma;
         }
-        capped_mean = glint_capped_offset_moments(q.t, q.sigma, q.span).mean;
     }
     // offset -> span - (span - offset) k raises the mean (k <= 1); offset -> offset k lowers it.
     // Only where Newton left the mean off by more than 1e-5 relative: the remap's rounding noise
@@ -266,7 +311,12 @@ GLINT_FN glint_binomial_middle glint_binomial_unbiased_setup(real N, real p, int
     return q;
 }
 
-// The middle part G in [1, N2 - 1] for a uniform u2.
+// All parameters of the mean-preserving sampler at (N, p), N >= 2.
+GLINT_FN glint_binomial_middle glint_binomial_unbiased_setup(real N, real p, int method) {
+    N = clamp(N, real(2), GLINT_BINOMIAL_MAX_N);
+    return glint_binomial_unbiased_middle_setup(N, p, glint_binomial_unbiased_ends(N, p, method));
+}
+
 GLINT_FN real glint_binomial_unbiased_middle(glint_binomial_middle q, real N2, real u2) {
     // Mirrored for the upper end, so that p -> 1 - p, u2 -> 1 - u2 swaps n and n_bar.
     real u_near = (q.lower > real(0.5)) ? u2 : real(1) - u2;
@@ -296,8 +346,10 @@ GLINT_FN glint_binomial glint_binomial_unbiased(real N, real p, real u1, real u2
     N = clamp(N, real(0), GLINT_BINOMIAL_MAX_N);
     p = clamp(p, real(0), real(1));
     real N2 = max(real(2), N);
-    glint_binomial_middle q = glint_binomial_unbiased_setup(N2, p, method);
-    glint_binomial_gates g = glint_binomial_dual_gates(N, p, u1, q.all_positive, q.all_negative);
-    real G = glint_binomial_unbiased_middle(q, N2, u2);
+    glint_binomial_ends e = glint_binomial_unbiased_ends(N2, p, method);
+    glint_binomial_gates g = glint_binomial_dual_gates(N, p, u1, e.all_positive, e.all_negative);
+    // The middle's parameters only where the gates chose the middle.
+    real G = real(1);
+    if (g.gaussian > real(0.5) && N > real(2)) G = glint_binomial_unbiased_middle(glint_binomial_unbiased_middle_setup(N2, p, e), N2, u2);
     return glint_binomial_pair(g.positive_fixed + g.gaussian * G, g.negative_fixed + g.gaussian * (N2 - G));
 }

@@ -174,19 +174,20 @@ GLINT_FN real glint_log1p(real x) {
 // subtraction loses nothing.
 GLINT_FN real glint_expm1_nonpositive(real x) {
     x = min(x, real(0));
-    real t = real(1) + x / real(14);
-    t = real(1) + x / real(13) * t;
-    t = real(1) + x / real(12) * t;
-    t = real(1) + x / real(11) * t;
-    t = real(1) + x / real(10) * t;
-    t = real(1) + x / real(9) * t;
-    t = real(1) + x / real(8) * t;
-    t = real(1) + x / real(7) * t;
-    t = real(1) + x / real(6) * t;
-    t = real(1) + x / real(5) * t;
-    t = real(1) + x / real(4) * t;
-    t = real(1) + x / real(3) * t;
-    t = real(1) + x / real(2) * t;
+    // Horner form of x (1 + x/2 (1 + x/3 (... (1 + x/14)))); the reciprocals fold at compile time.
+    real t = real(1) + x * (real(1) / real(14));
+    t = real(1) + x * (real(1) / real(13)) * t;
+    t = real(1) + x * (real(1) / real(12)) * t;
+    t = real(1) + x * (real(1) / real(11)) * t;
+    t = real(1) + x * (real(1) / real(10)) * t;
+    t = real(1) + x * (real(1) / real(9)) * t;
+    t = real(1) + x * (real(1) / real(8)) * t;
+    t = real(1) + x * (real(1) / real(7)) * t;
+    t = real(1) + x * (real(1) / real(6)) * t;
+    t = real(1) + x * (real(1) / real(5)) * t;
+    t = real(1) + x * (real(1) / real(4)) * t;
+    t = real(1) + x * (real(1) / real(3)) * t;
+    t = real(1) + x * real(0.5) * t;
     // ln(2)/2 to 21 digits.
     return (x > real(-0.346573590279972654709)) ? x * t : exp(x) - real(1);
 }

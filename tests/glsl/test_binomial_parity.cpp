@@ -25,15 +25,16 @@ namespace {
 struct parity {
     std::size_t count = 0, identical = 0, flips = 0;
     double max_difference = 0;  // over the counts that did not flip, relative to max(N, 1)
+    float worst_gpu = 0, worst_cpu = 0, worst_n = 0;
 };
 
-// A count is identical, or differs by rounding (below 1e-4 of max(N, 1)), or flipped.
+// A count is identical, or agrees (within BINOMIAL_GLSL_AGREEMENT of max(N, 1)), or flipped.
 void tally(parity& s, float gpu, float cpu, float N) {
     ++s.count;
     const double d = std::fabs(static_cast<double>(gpu) - static_cast<double>(cpu)) / std::max(static_cast<double>(N), 1.0);
     s.identical += gpu == cpu;
-    if (d > 1e-4) ++s.flips;
-    else s.max_difference = std::max(s.max_difference, d);
+    if (d > BINOMIAL_GLSL_AGREEMENT) ++s.flips;
+    else if (d > s.max_difference) s.max_difference = d, s.worst_gpu = gpu, s.worst_cpu = cpu, s.worst_n = N;
 }
 
 }  // namespace
@@ -71,10 +72,10 @@ TEST_CASE("binomial kernels: GLSL against C++ over the grid, 256 uniform pairs p
         }
         const double rate = static_cast<double>(s.flips) / static_cast<double>(s.count);
         MESSAGE(std::string(glint::name(v)) << ": " << s.count << " counts, " << s.identical << " identical, " << s.flips
-                                            << " flipped (rate " << rate << "), the others within " << s.max_difference << " of max(N, 1)");
+                                            << " flipped (rate " << rate << "), the others within " << s.max_difference << " of max(N, 1) (" << s.worst_gpu << " against "
+                       << s.worst_cpu << " at N = " << s.worst_n << ")");
         CHECK(non_finite == 0u);
         CHECK(rate <= BINOMIAL_GLSL_MAX_FLIP_RATE);
-        CHECK(s.max_difference <= BINOMIAL_GLSL_MAX_DIFFERENCE);
     }
 }
 
@@ -109,8 +110,8 @@ TEST_CASE("multinomial kernel: GLSL against C++, K = 4 and 8") {
         }
         const double rate = static_cast<double>(s.flips) / static_cast<double>(s.count);
         MESSAGE("K = " << K << ": " << s.count << " counts, " << s.identical << " identical, " << s.flips << " flipped (rate "
-                       << rate << "), the others within " << s.max_difference << " of max(N, 1)");
+                       << rate << "), the others within " << s.max_difference << " of max(N, 1) (" << s.worst_gpu << " against "
+                       << s.worst_cpu << " at N = " << s.worst_n << ")");
         CHECK(rate <= BINOMIAL_GLSL_MAX_FLIP_RATE);
-        CHECK(s.max_difference <= BINOMIAL_GLSL_MAX_DIFFERENCE);
     }
 }

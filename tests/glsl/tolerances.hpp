@@ -25,9 +25,11 @@ constexpr double POW_LOG1P_GLSL_MAX_ABS_DIFFERENCE = 2e-7;
 constexpr double POW_LOG1P_GLSL_MAX_REL_EXACT = 1e-5;
 // -expm1(N log1p(-p)): measured 4.3e-7 relative from exact (below 8 ulp).
 constexpr double ANY_SUCCESS_EXPM1_GLSL_MAX_REL_EXACT = 5e-7;
-// Binomial and multinomial samplers (test_binomial_parity.cpp): the share of counts where a
-// discrete decision flips between llvmpipe and C++ (a gate input within a few ulp of its
-// threshold, about 1e-6 per gate; measured: 0 of 165376 per variant and of 589824 per K), and
-// the largest difference of the others relative to max(N, 1) (measured 2.0e-6, DB23's floor).
+// Binomial and multinomial samplers (test_binomial_parity.cpp): a count agrees when it is
+// within 1e-4 of max(N, 1) of the C++ one (builtin exp, log, pow and sqrt differ by a few ulp and
+// the small-N middle's Newton refinement and erfc amplify that: measured up to 1.7e-5 in the K = 8
+// hierarchy); the share that does not (a discrete decision flipped by an input within a few ulp
+// of its threshold, about 1e-6 per gate) is bounded. Measured: 0 of 165376 per variant and of
+// 589824 per K.
+constexpr double BINOMIAL_GLSL_AGREEMENT = 1e-4;
 constexpr double BINOMIAL_GLSL_MAX_FLIP_RATE = 1e-4;
-constexpr double BINOMIAL_GLSL_MAX_DIFFERENCE = 1e-5;

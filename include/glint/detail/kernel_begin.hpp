@@ -29,10 +29,13 @@ using namespace glm;  // NOLINT: confined to glint::detail::glsl
 #define GLINT_PRECISE
 // A named constant (in GLSL: `const T`).
 #define GLINT_CONST(T) static constexpr T
-// The vector aliases that depend on the precision `real` (in GLSL: the builtin float vectors).
+// The vector aliases that depend on the precision `real` (in GLSL: the builtin float vectors),
+// and GLINT_DOUBLE, true in the double instantiation (in GLSL: false), for series that need more
+// terms in double; a branch on it is resolved at compile time.
 #define GLINT_KERNEL_TYPES                                    \
     using vec2 = ::glm::vec<2, real, ::glm::defaultp>;        \
     using vec3 = ::glm::vec<3, real, ::glm::defaultp>;        \
     using vec4 = ::glm::vec<4, real, ::glm::defaultp>;        \
     static_assert(std::is_same<real, float>::value || std::is_same<real, double>::value, \
-                  "glint kernels exist for float and double");
+                  "glint kernels exist for float and double");                                  \
+    static constexpr bool GLINT_DOUBLE = std::is_same<real, double>::value;

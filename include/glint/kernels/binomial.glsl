@@ -210,7 +210,12 @@ GLINT_FN glint_binomial_ends glint_binomial_unbiased_ends(real N, real p, int me
     glint_binomial_ends e;
     e.lower = (p <= real(0.5)) ? real(1) : real(0);
     real p_near = (e.lower > real(0.5)) ? p : real(1) - p;
-    if (method == GLINT_POW_LOG1P) {
+    if (N <= real(2)) {
+        // N2 = 2: the squares, exactly and without a transcendental.
+        e.all_positive = p * p;
+        e.all_negative = (real(1) - p) * (real(1) - p);
+        e.any_near = p_near * (real(2) - p_near);
+    } else if (method == GLINT_POW_LOG1P) {
         // One log1p per end: x = log P(near count = 0), x_far = log P(near count = N).
         real x = N * glint_log1p(-p_near);
         real x_far = N * glint_log1p(-(real(1) - p_near));

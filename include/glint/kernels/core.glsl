@@ -137,8 +137,8 @@ GLINT_CONST(real) GLINT_FLT_MIN_NORMAL = real(1.17549435082228750797e-38);
 
 // log(1 + x). Domain x > -1; x <= -1 returns log(2^-126) = -87.34. Range reduction
 // 1 + x = m 2^e with m in [sqrt(1/2), sqrt(2)), then log(m) = 2 atanh(s), s = (m - 1)/(m + 1),
-// |s| <= 0.1716, by its Taylor series in z = s^2 <= 0.0295 truncated after z^11 (relative
-// truncation error below z^12 / 25 = 1.7e-20, enough for double). The rounding error of 1 + x is
+// |s| <= 0.1716, by its Taylor series in z = s^2 <= 0.0295, truncated after z^6 in float and z^11
+// in double (relative truncation error below z^12 / 25 = 1.7e-20). The rounding error of 1 + x is
 // added back to first order. Measured error in docs/core_numerics.md.
 GLINT_FN real glint_log1p(real x) {
     x = max(x, real(-1));
@@ -152,12 +152,16 @@ GLINT_FN real glint_log1p(real x) {
     real f = m - real(1);  // exact (Sterbenz)
     real s = f / (real(2) + f);
     real z = s * s;
-    real t = real(1) / real(23);
-    t = real(1) / real(21) + z * t;
-    t = real(1) / real(19) + z * t;
-    t = real(1) / real(17) + z * t;
-    t = real(1) / real(15) + z * t;
-    t = real(1) / real(13) + z * t;
+    // Float needs the terms up to z^6 (truncation below z^7 / 15 = 1.3e-12); double up to z^11.
+    real t = real(1) / real(13);
+    if (GLINT_DOUBLE) {
+        t = real(1) / real(23);
+        t = real(1) / real(21) + z * t;
+        t = real(1) / real(19) + z * t;
+        t = real(1) / real(17) + z * t;
+        t = real(1) / real(15) + z * t;
+        t = real(1) / real(13) + z * t;
+    }
     t = real(1) / real(11) + z * t;
     t = real(1) / real(9) + z * t;
     t = real(1) / real(7) + z * t;
@@ -174,13 +178,17 @@ GLINT_FN real glint_log1p(real x) {
 // subtraction loses nothing.
 GLINT_FN real glint_expm1_nonpositive(real x) {
     x = min(x, real(0));
-    // Horner form of x (1 + x/2 (1 + x/3 (... (1 + x/14)))); the reciprocals fold at compile time.
-    real t = real(1) + x * (real(1) / real(14));
-    t = real(1) + x * (real(1) / real(13)) * t;
-    t = real(1) + x * (real(1) / real(12)) * t;
-    t = real(1) + x * (real(1) / real(11)) * t;
-    t = real(1) + x * (real(1) / real(10)) * t;
-    t = real(1) + x * (real(1) / real(9)) * t;
+    // Horner form of x (1 + x/2 (1 + x/3 (... (1 + x/n)))), n = 9 in float (truncation below
+    // 0.347^9 / 10! = 2.0e-11), 14 in double; the reciprocals fold at compile time.
+    real t = real(1) + x * (real(1) / real(9));
+    if (GLINT_DOUBLE) {
+        t = real(1) + x * (real(1) / real(14));
+        t = real(1) + x * (real(1) / real(13)) * t;
+        t = real(1) + x * (real(1) / real(12)) * t;
+        t = real(1) + x * (real(1) / real(11)) * t;
+        t = real(1) + x * (real(1) / real(10)) * t;
+        t = real(1) + x * (real(1) / real(9)) * t;
+    }
     t = real(1) + x * (real(1) / real(8)) * t;
     t = real(1) + x * (real(1) / real(7)) * t;
     t = real(1) + x * (real(1) / real(6)) * t;

@@ -8,4 +8,6 @@
 #define GLINT_OUT(T) out T
 #define GLINT_CONST(T) const T
 #define GLINT_PRECISE precise
+// True in the C++ double instantiation; GLSL computes in float.
+const bool GLINT_DOUBLE = false;
 #endif

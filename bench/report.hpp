@@ -1,0 +1,59 @@
+// Shared pieces of the accuracy-versus-time report (glint_report): timing through Google
+// Benchmark in the same run, number formatting, and the sections' entry points.
+#pragma once
+
+#include <benchmark/benchmark.h>
+
+#include <cstdio>
+#include <functional>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace glint_report {
+
+// CPU time per iteration (ns) of every benchmark run, by name.
+class collector : public benchmark::BenchmarkReporter {
+public:
+    std::map<std::string, double> ns;
+    bool ReportContext(const Context&) override { return true; }
+    void ReportRuns(const std::vector<Run>& runs) override {
+        for (const Run& r : runs) ns[r.run_name.function_name] = r.GetAdjustedCPUTime();
+    }
+};
+
+// Registers `body` (called once per iteration with the iteration index) as a benchmark.
+inline void add(const std::string& name, std::function<void(std::size_t)> body, double min_time) {
+    benchmark::RegisterBenchmark(name.c_str(), [body](benchmark::State& state) {
+        std::size_t i = 0;
+        for (auto _ : state) body(i++);
+    })->MinTime(min_time);
+}
+
+// Runs every registered benchmark, clears them, and returns the times.
+inline std::map<std::string, double> run_all() {
+    collector c;
+    benchmark::RunSpecifiedBenchmarks(&c);
+    benchmark::ClearRegisteredBenchmarks();
+    return c.ns;
+}
+
+inline std::string fmt(double v, const char* f = "%.3g") {
+    char b[64];
+    std::snprintf(b, sizeof b, f, v);
+    return b;
+}
+
+// What a section produces: markdown for the terminal and docs, and files for docs/.
+struct section {
+    std::string markdown;
+    std::string csv_rows;  // rows of accuracy_vs_time.csv (header: csv_header)
+    std::map<std::string, std::string> files;  // name in docs/ -> content
+};
+
+inline const char* csv_header = "kernel,variant,precision,error_measure,error,ns_per_call,time_ratio_to_reference,reference\n";
+
+section core_section(double min_time);
+section binomial_section(double min_time);
+
+}  // namespace glint_report

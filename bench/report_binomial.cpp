@@ -182,10 +182,11 @@ section binomial_section(double min_time) {
             const double fb = npf > 0 ? gt::model_of<float>(knobs[k].variant, g.N, g.p, knobs[k].method).mean() / npf - 1 : 0;
             model_csv << glint::name(knobs[k].variant) << ',' << method_name(knobs[k].method) << ',' << g.N << ',' << g.p << ','
                       << d.mean_bias << ',' << d.variance_error << ',' << d.p0_error << ',' << d.w1_over_sigma << ',' << d.ks << ',' << fb << '\n';
-            // Worst mean bias where N p >= 1e-6 (below, a count is almost surely 0 and the relative
-            // bias of a mean that small means nothing for rendering).
-            if (np >= 1e-6 && std::fabs(d.mean_bias) > w[k].mean_bias) w[k].mean_bias = std::fabs(d.mean_bias), w[k].at_mean = g;
-            if (npf >= 1e-6) w[k].float_mean_bias = std::max(w[k].float_mean_bias, std::fabs(fb));
+            // Worst relative mean bias where the bias is more than 1e-7 in absolute terms (the target
+            // is 0.1% relative or 1e-7 absolute; the float kernel's uniforms resolve 2^-24, so a
+            // gate probability below 1e-6 is off by up to 3% of itself, 6e-8 absolutely).
+            if (std::fabs(d.mean_bias) * np > 1e-7 && std::fabs(d.mean_bias) > w[k].mean_bias) w[k].mean_bias = std::fabs(d.mean_bias), w[k].at_mean = g;
+            if (std::fabs(fb) * npf > 1e-7) w[k].float_mean_bias = std::max(w[k].float_mean_bias, std::fabs(fb));
             if (np * (1 - g.p) >= 1) w[k].variance = std::max(w[k].variance, std::fabs(d.variance_error));
             if (p0 > 1e-300) w[k].p0 = std::max(w[k].p0, std::fabs(d.p0_error));
             if (var > 0) w[k].w1 = std::max(w[k].w1, d.w1_over_sigma);
@@ -196,8 +197,8 @@ section binomial_section(double min_time) {
     // The table.
     std::ostringstream md, csv;
     md << "| sampler | worst \\|mean bias\\| (double law) | at (N, p) | worst \\|mean bias\\| (float kernel) | worst \\|var. error\\| (Np(1-p) >= 1) "
-          "| worst \\|P(0) error\\| | worst W1/sigma | worst KS | median ns/sample | median speed-up vs std |\n"
-       << "|---|---|---|---|---|---|---|---|---|---|\n";
+          "| worst \\|P(0) error\\| | worst W1/sigma | worst KS | median ns/sample | median speed-up vs std | same where N p (1-p) >= 1 |\n"
+       << "|---|---|---|---|---|---|---|---|---|---|---|\n";
     std::vector<std::string> plot_labels;
     std::vector<double> plot_ns, plot_bias, plot_w1;
     double median_dual = 0, median_unbiased = 0;
@@ -206,14 +207,17 @@ section binomial_section(double min_time) {
     for (std::size_t i = 0; i < points.size(); ++i) unbiased_over_dual.push_back(t_unbiased[i] / t_dual[i]);
     for (std::size_t k = 0; k < knob_count; ++k) {
         const auto t = series("knob" + std::to_string(k));
-        std::vector<double> speedup;
-        for (std::size_t i = 0; i < points.size(); ++i) speedup.push_back(t_std[i] / t[i]);
+        std::vector<double> speedup, speedup_busy;
+        for (std::size_t i = 0; i < points.size(); ++i) {
+            speedup.push_back(t_std[i] / t[i]);
+            if (points[i].N * points[i].p * (1 - points[i].p) >= 1) speedup_busy.push_back(t_std[i] / t[i]);
+        }
         const double med = median(t), med_speedup = median(speedup);
         if (k == 5) median_dual = med;
         if (k == 8) median_unbiased = med;
         md << "| " << knobs[k].label << " | " << fmt(w[k].mean_bias) << " | (" << fmt(w[k].at_mean.N) << ", " << fmt(w[k].at_mean.p) << ") | "
            << fmt(w[k].float_mean_bias) << " | " << fmt(w[k].variance) << " | " << fmt(w[k].p0) << " | " << fmt(w[k].w1) << " | "
-           << fmt(w[k].ks) << " | " << fmt(med, "%.1f") << " | " << fmt(med_speedup, "%.2f") << " |\n";
+           << fmt(w[k].ks) << " | " << fmt(med, "%.1f") << " | " << fmt(med_speedup, "%.2f") << " | " << fmt(median(speedup_busy), "%.2f") << " |\n";
         csv << "binomial," << glint::name(knobs[k].variant) << " " << method_name(knobs[k].method) << ",float,worst |mean bias| over the grid,"
             << w[k].mean_bias << ',' << med << ',' << 1 / med_speedup << ",std::binomial_distribution\n";
         csv << "binomial," << glint::name(knobs[k].variant) << " " << method_name(knobs[k].method) << ",float,worst W1/sigma over the grid,"
@@ -227,12 +231,12 @@ section binomial_section(double min_time) {
     std::vector<double> exact_t;
     for (double x : series("exact"))
         if (x > 0) exact_t.push_back(x);
-    md << "| mean-preserving (glint), log1p, double | = float law | | | | | | | " << fmt(median(series("unbiased_double")), "%.1f") << " | |\n"
-       << "| dual-gated, KK25 Alg. 1, double | | | | | | | | " << fmt(median(series("dual_gated_double")), "%.1f") << " | |\n"
-       << "| std::binomial_distribution<long long> (exact, integer N) | 0 | | | 0 | 0 | 0 | 0 | " << fmt(med_std, "%.1f") << " | 1 |\n"
-       << "| glint::testing::binomial_exact (exact, 33 points) | 0 | | | 0 | 0 | 0 | 0 | " << fmt(median(exact_t), "%.0f") << " | |\n";
+    md << "| mean-preserving (glint), log1p, double | (double law) | | | | | | | | " << fmt(median(series("unbiased_double")), "%.1f") << " | | |\n"
+       << "| dual-gated, KK25 Alg. 1, double | (double law) | | | | | | | | " << fmt(median(series("dual_gated_double")), "%.1f") << " | | |\n"
+       << "| std::binomial_distribution<long long> (exact, integer N) | 0 | | 0 | 0 | 0 | 0 | 0 | " << fmt(med_std, "%.1f") << " | 1 | 1 |\n"
+       << "| glint::testing::binomial_exact (exact, 33 points) | 0 | | 0 | 0 | 0 | 0 | 0 | " << fmt(median(exact_t), "%.0f") << " | | |\n";
     csv << "binomial,std::binomial_distribution,double,exact,0," << med_std << ",1,std::binomial_distribution\n";
-    plot_labels.push_back("std::binomial_distribution");
+    plot_labels.push_back("std::binomial_distribution (exact: at the floor)");
     plot_ns.push_back(med_std);
     plot_bias.push_back(1e-9);
     plot_w1.push_back(1e-9);
@@ -267,7 +271,9 @@ section binomial_section(double min_time) {
         << "p in {1e-16, 1e-14, ..., 1e-4, 1e-3, 1e-2, 0.03, 0.1, 0.3, 0.5, 0.7, 0.9, 0.99, 1 - 1e-6, 1}.\n"
         << "\"double law\" evaluates the sampler's parameters in double; \"float kernel\" is the law the float\n"
         << "kernel implements (its parameters and gate thresholds rounded as float rounds them), which is\n"
-        << "where KK25's Fig. 5 shows up. Mean bias counts where N p >= 1e-6. Times are CPU time per sample\n"
+        << "where KK25's Fig. 5 shows up. A relative mean bias counts where it exceeds 1e-7 in absolute terms\n"
+        << "(the target: 0.1% relative or 1e-7 absolute; the float kernel's 2^-24 uniforms put a gate\n"
+        << "probability below 1e-6 off by up to 6e-8). Times are CPU time per sample\n"
         << "at each grid point (1024 uniform pairs cycled), summarised by the median over the grid; the\n"
         << "speed-up is the median over the grid of the per-point ratio to std::binomial_distribution\n"
         << "(constructed per sample, as a per-pixel N and p require). Only ratios from one run mean anything.\n\n"

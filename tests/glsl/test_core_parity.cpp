@@ -160,3 +160,21 @@ TEST_CASE("log1p and expm1: GLSL within the tolerance table of C++ and of the ex
     CHECK(se.max <= EXPM1_GLSL_MAX_ULP_DISTANCE);
     CHECK(worst_e <= EXPM1_GLSL_MAX_ULP_EXACT);
 }
+
+TEST_CASE("erfc: GLSL within the tolerance table of C++ and of the exact value") {
+    std::vector<float> xs;
+    for (double x = -4; x <= 9; x += 1e-4) xs.push_back(static_cast<float>(x));
+    auto gpu = from_words<float>(glint_test::map_floats({"core.glsl"}, "float", "glint_erfc(x)", xs));
+    std::vector<float> cpu;
+    double worst_exact = 0;
+    for (std::size_t i = 0; i < xs.size(); ++i) {
+        cpu.push_back(glint::erfc(xs[i]));
+        const long double exact = erfcl(static_cast<long double>(xs[i]));
+        worst_exact = std::max(worst_exact, static_cast<double>(fabsl(gpu[i] - exact) / exact));
+    }
+    ulp_stats s = compare(gpu, cpu);
+    MESSAGE("erfc GLSL vs C++: " << s.count << " inputs, rate " << s.rate() << ", max " << s.max << " ulp; GLSL vs exact max relative "
+                                 << worst_exact);
+    CHECK(s.max <= ERFC_GLSL_MAX_ULP_DISTANCE);
+    CHECK(worst_exact <= ERFC_GLSL_MAX_RELATIVE_EXACT);
+}

@@ -118,25 +118,27 @@ GLINT_FN real glint_normal_positive_part_mean(real t) {
 // [-40, 35.7] (t from 4.9e8 down to -8).
 GLINT_FN real glint_clamped_gaussian_t(real y) {
     y = clamp(y, real(-40), real(35.7));
-    real s = (y - real(2.55)) / real(4.75);
-    real a = real(0.1304822196869064);
-    a = real(-0.27358394382870294) + s * a;
-    a = real(0.013247836019274119) + s * a;
-    a = real(0.31032817702901683) + s * a;
-    a = real(-0.094752503176729896) + s * a;
-    a = real(-0.46819370122792325) + s * a;
-    a = real(1.087826679394494) + s * a;
-    a = real(-2.578053376791563) + s * a;
-    a = real(-1.1458385261407047) + s * a;
-    real q = (sqrt(max(y, real(7.3))) - real(4.3383994578685607)) / real(1.6365482406473015);
+    if (y < real(-2.2)) return exp(real(-0.5) * y);
+    if (y <= real(7.3)) {
+        real s = (y - real(2.55)) / real(4.75);
+        real a = real(0.1304822196869064);
+        a = real(-0.27358394382870294) + s * a;
+        a = real(0.013247836019274119) + s * a;
+        a = real(0.31032817702901683) + s * a;
+        a = real(-0.094752503176729896) + s * a;
+        a = real(-0.46819370122792325) + s * a;
+        a = real(1.087826679394494) + s * a;
+        a = real(-2.578053376791563) + s * a;
+        return real(-1.1458385261407047) + s * a;
+    }
+    real q = (sqrt(y) - real(4.3383994578685607)) / real(1.6365482406473015);
     real b = real(0.00060684978664457621);
     b = real(-0.0021686196695519548) + q * b;
     b = real(0.0056332391221094883) + q * b;
     b = real(-0.016333686667123551) + q * b;
     b = real(0.049776818499077981) + q * b;
     b = real(-2.472677074787021) + q * b;
-    b = real(-5.5657308993254242) + q * b;
-    return (y < real(-2.2)) ? exp(real(-0.5) * y) : ((y <= real(7.3)) ? a : b);
+    return real(-5.5657308993254242) + q * b;
 }
 
 // Moments of the capped offset O = min(sigma max(t + Z, 0), span) = clamp(mu + sigma Z, 0, span),

@@ -6,8 +6,6 @@
 #include <boost/math/special_functions/erf.hpp>
 #include <cmath>
 #include <cstdio>
-#include <cstring>
-#include <fstream>
 #include <functional>
 #include <map>
 #include <sstream>

@@ -107,7 +107,8 @@ binomial_result<real> binomial_unbiased(real N, real p, real u1, real u2, pow_me
 }
 
 // The variants as a value, for code generic over them (glint::multinomial, tests, benches).
-enum class binomial_variant { ungated, gated_db23, gated, dual_gated, unbiased };
+// The values are the kernels' GLINT_BINOMIAL_* codes.
+enum class binomial_variant { ungated = 0, gated_db23 = 1, gated = 2, dual_gated = 3, unbiased = 4 };
 
 inline const char* name(binomial_variant v) {
     switch (v) {
@@ -134,14 +135,7 @@ inline pow_method published_pow_method(binomial_variant v) {
 
 template <class real>
 binomial_result<real> binomial(binomial_variant v, real N, real p, real u1, real u2, pow_method method) {
-    switch (v) {
-        case binomial_variant::ungated: return binomial_ungated(N, p, u1, u2);
-        case binomial_variant::gated_db23: return binomial_gated_db23(N, p, u1, u2, method);
-        case binomial_variant::gated: return binomial_gated(N, p, u1, u2, method);
-        case binomial_variant::dual_gated: return binomial_dual_gated(N, p, u1, u2, method);
-        case binomial_variant::unbiased: break;
-    }
-    return binomial_unbiased(N, p, u1, u2, method);
+    return detail::glsl::binomial_kernels<real>::glint_binomial_variant(static_cast<int>(v), N, p, u1, u2, static_cast<int>(method));
 }
 
 template <class real>

@@ -81,6 +81,8 @@ verdict judge(const gt::binomial_model& m, double N, const std::function<float(i
     return v;
 }
 
+bool rejected(const verdict& v) { return v.chi_p < alpha || v.ks_p < alpha; }
+
 float uniform(int i, std::uint32_t point, std::uint32_t stream) {
     return glint::open_unit_from_bits<float>(glint::pcg3d(glm::uvec3(static_cast<std::uint32_t>(i), point, stream)).x);
 }
@@ -88,7 +90,7 @@ float uniform(int i, std::uint32_t point, std::uint32_t stream) {
 }  // namespace
 
 TEST_CASE("every float binomial kernel follows its own closed form on the whole grid") {
-    int tests = 0, rejected = 0;
+    int tests = 0, rejections = 0;
     std::uint32_t point = 0;
     for (double N : gt::binomial_grid_n())
         for (double p : gt::binomial_grid_p()) {
@@ -101,8 +103,8 @@ TEST_CASE("every float binomial kernel follows its own closed form on the whole 
                     return glint::binomial(v, Nf, pf, uniform(i, point, 1), uniform(i, point, 2), method).positive;
                 });
                 tests += 2;
-                if (r.chi_p < alpha || r.ks_p < alpha) {
-                    ++rejected;
+                if (rejected(r)) {
+                    ++rejections;
                     CAPTURE(std::string(glint::name(v)));
                     CAPTURE(N);
                     CAPTURE(p);
@@ -111,7 +113,7 @@ TEST_CASE("every float binomial kernel follows its own closed form on the whole 
                 }
             }
         }
-    MESSAGE(tests << " tests at alpha " << alpha << " each; " << rejected << " points rejected");
+    MESSAGE(tests << " tests at alpha " << alpha << " each; " << rejections << " points rejected");
 }
 
 TEST_CASE("the fidelity tests reject a wrong law: Alg. 1 judged as the mean-preserving sampler") {
@@ -128,7 +130,7 @@ TEST_CASE("the fidelity tests reject a wrong law: Alg. 1 judged as the mean-pres
                 return glint::binomial_dual_gated(Nf, pf, uniform(i, point, 1), uniform(i, point, 2)).positive;
             });
             ++tried;
-            caught += (r.chi_p < alpha || r.ks_p < alpha);
+            caught += rejected(r);
         }
     MESSAGE("caught " << caught << " of " << tried << " points where Alg. 1's mean differs by more than 5%");
     REQUIRE(tried >= 20);
@@ -148,7 +150,7 @@ TEST_CASE("the fidelity tests reject a mean shifted by 1% where the sample resol
                 return glint::binomial_unbiased(Nf, pf, uniform(i, point, 1), uniform(i, point, 2)).positive;
             });
             ++tried;
-            caught += (r.chi_p < alpha || r.ks_p < alpha);
+            caught += rejected(r);
         }
     MESSAGE("caught " << caught << " of " << tried << " points");
     REQUIRE(tried >= 10);

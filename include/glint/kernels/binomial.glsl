@@ -328,6 +328,13 @@ GLINT_FN real glint_binomial_unbiased_middle(glint_binomial_middle q, real N2, r
     // Mirrored for the upper end, so that p -> 1 - p, u2 -> 1 - u2 swaps n and n_bar.
     real u_near = (q.lower > real(0.5)) ? u2 : real(1) - u2;
     real z = glint_normal_quantile(u_near);
+    // Where neither the far bound nor the blend below acts (all but small N): one rounding of
+    // center + sigma z. At N = 1e16 a count's ulp is most of a standard deviation, and rounding the
+    // offset first and then adding it to 1 or subtracting it from N - 1 would round twice.
+    if (q.far_scale == real(1) && q.span >= real(2)) {
+        real s = (q.lower > real(0.5)) ? z : -z;
+        return clamp(q.center + q.sigma * s, real(1), N2 - real(1));
+    }
     real offset = min(max(q.sigma * q.t + q.sigma * z, real(0)), q.span);
     // Written so that far_scale = 1 is exactly the identity (span - (span - o) rounds o to ulp(span)).
     offset = (q.far_scale >= real(0)) ? offset * q.far_scale + q.span * (real(1) - q.far_scale) : -offset * q.far_scale;
@@ -336,14 +343,7 @@ GLINT_FN real glint_binomial_unbiased_middle(glint_binomial_middle q, real N2, r
     // law continuous in N.
     real two_point = (u_near >= real(1) - q.two_point) ? q.span : real(0);
     offset = mix(two_point, offset, clamp(q.span - real(1), real(0), real(1)));
-    real small_n = (q.lower > real(0.5)) ? real(1) + offset : (N2 - real(1)) - offset;
-    // Where neither the far bound nor the blend acts (all but small N), the same value as one
-    // rounding of center + sigma z: at N = 1e16 a count's ulp is most of a standard deviation, and
-    // rounding the offset first and then adding it to 1 or subtracting it from N - 1 would round
-    // twice.
-    real s = (q.lower > real(0.5)) ? z : -z;
-    real large_n = clamp(q.center + q.sigma * s, real(1), N2 - real(1));
-    return (q.far_scale == real(1) && q.span >= real(2)) ? large_n : small_n;
+    return (q.lower > real(0.5)) ? real(1) + offset : (N2 - real(1)) - offset;
 }
 
 // The mean-preserving dual-gated sampler: KK25 Alg. 1's gates (exact for N <= 2), and for N > 2
@@ -359,4 +359,21 @@ GLINT_FN glint_binomial glint_binomial_unbiased(real N, real p, real u1, real u2
     real G = real(1);
     if (g.gaussian > real(0.5) && N > real(2)) G = glint_binomial_unbiased_middle(glint_binomial_unbiased_middle_setup(N2, p, e), N2, u2);
     return glint_binomial_pair(g.positive_fixed + g.gaussian * G, g.negative_fixed + g.gaussian * (N2 - G));
+}
+
+// ---------------------------------------------------------------------------------------------
+// Variant codes, as glint::binomial_variant, and the sampler for a code (any other code: the
+// mean-preserving one).
+GLINT_CONST(int) GLINT_BINOMIAL_UNGATED = 0;
+GLINT_CONST(int) GLINT_BINOMIAL_GATED_DB23 = 1;
+GLINT_CONST(int) GLINT_BINOMIAL_GATED = 2;
+GLINT_CONST(int) GLINT_BINOMIAL_DUAL_GATED = 3;
+GLINT_CONST(int) GLINT_BINOMIAL_UNBIASED = 4;
+
+GLINT_FN glint_binomial glint_binomial_variant(int variant, real N, real p, real u1, real u2, int method) {
+    if (variant == GLINT_BINOMIAL_UNGATED) return glint_binomial_ungated(N, p, u2);
+    if (variant == GLINT_BINOMIAL_GATED_DB23) return glint_binomial_gated_db23(N, p, u1, u2, method);
+    if (variant == GLINT_BINOMIAL_GATED) return glint_binomial_gated(N, p, u1, u2, method);
+    if (variant == GLINT_BINOMIAL_DUAL_GATED) return glint_binomial_dual_gated(N, p, u1, u2, method);
+    return glint_binomial_unbiased(N, p, u1, u2, method);
 }

@@ -1,7 +1,8 @@
 // glint multinomial kernel: N trials over K = 2..8 bins with probabilities p[0..K-1] (their sum
 // at most 1; the remainder is an implicit rest bin, KK25 Eq. 17's dummy light for masking and
 // directions below the horizon), sampled as a binary hierarchy of binomials (KK25 Sec. 6).
-// Single source for C++ and GLSL 4.50; needs core.glsl and binomial.glsl.
+// Single source for C++ and GLSL 4.50; needs core.glsl and binomial.glsl (which has the variant
+// codes GLINT_BINOMIAL_* and glint_binomial_variant).
 //
 // The root splits the K bins from the rest, each inner node splits its bins into halves; K - 1
 // binomials for the bins and one for the rest, so K = 8 costs 8 binomials against 4 for K = 4.
@@ -11,21 +12,6 @@
 // positive count and its right half the remainder; a node holding less than 2 (a real count
 // such as 1.37, or 0 or 1) sends all of it left with probability q and right otherwise, which is
 // exact for N_node = 0 and 1 and keeps the mean N_node q for any real N_node.
-
-// Variant codes, as glint::binomial_variant.
-GLINT_CONST(int) GLINT_BINOMIAL_UNGATED = 0;
-GLINT_CONST(int) GLINT_BINOMIAL_GATED_DB23 = 1;
-GLINT_CONST(int) GLINT_BINOMIAL_GATED = 2;
-GLINT_CONST(int) GLINT_BINOMIAL_DUAL_GATED = 3;
-GLINT_CONST(int) GLINT_BINOMIAL_UNBIASED = 4;
-
-GLINT_FN glint_binomial glint_binomial_variant(int variant, real N, real p, real u1, real u2, int method) {
-    if (variant == GLINT_BINOMIAL_UNGATED) return glint_binomial_ungated(N, p, u2);
-    if (variant == GLINT_BINOMIAL_GATED_DB23) return glint_binomial_gated_db23(N, p, u1, u2, method);
-    if (variant == GLINT_BINOMIAL_GATED) return glint_binomial_gated(N, p, u1, u2, method);
-    if (variant == GLINT_BINOMIAL_DUAL_GATED) return glint_binomial_dual_gated(N, p, u1, u2, method);
-    return glint_binomial_unbiased(N, p, u1, u2, method);
-}
 
 struct glint_multinomial_probabilities {
     real p[8];

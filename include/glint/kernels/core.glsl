@@ -98,9 +98,7 @@ GLINT_FN real glint_normal_quantile(real u) {
 // erfc(x), Numerical Recipes' Chebyshev fit "erfcc" (Press et al., Numerical Recipes in C, 2nd
 // ed., 1992, Sec. 6.2; coefficients as printed there): relative error below 1.2e-7 for all x,
 // measured 1.07e-7 in double (docs/core_numerics.md). One exp.
-GLINT_FN real glint_erfc(real x) {
-    real z = abs(x);
-    real t = real(1) / (real(1) + real(0.5) * z);
+GLINT_FN real glint_erfcc_series(real t) {
     real r = real(0.17087277);
     r = real(-0.82215223) + t * r;
     r = real(1.48851587) + t * r;
@@ -110,9 +108,22 @@ GLINT_FN real glint_erfc(real x) {
     r = real(0.09678418) + t * r;
     r = real(0.37409196) + t * r;
     r = real(1.00002368) + t * r;
-    r = real(-1.26551223) + t * r;
-    real e = t * exp(-z * z + r);
+    return real(-1.26551223) + t * r;
+}
+
+GLINT_FN real glint_erfc(real x) {
+    real z = abs(x);
+    real t = real(1) / (real(1) + real(0.5) * z);
+    real e = t * exp(-z * z + glint_erfcc_series(t));
     return (x >= real(0)) ? e : real(2) - e;
+}
+
+// The scaled complement erfcx(z) = exp(z^2) erfc(z) for z >= 0, from the same fit (relative error
+// below 1.2e-7), taking y = 1/z so that z = inf (y = 0, erfcx = 0) needs no division by zero.
+GLINT_FN real glint_erfcx_of_reciprocal(real y) {
+    y = max(y, real(0));
+    real t = real(2) * y / (real(2) * y + real(1));  // 1 / (1 + z/2)
+    return t * exp(glint_erfcc_series(t));
 }
 
 // The standard normal CDF Phi(t) = erfc(-t / sqrt(2)) / 2, with erfc's relative accuracy in the

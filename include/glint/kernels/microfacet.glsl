@@ -256,49 +256,88 @@ GLINT_FN int glint_boundary_pieces(glint_light_boundary b, int i, int pieces) {
     return (b.kind[i] == 1) ? 4 * pieces : pieces;
 }
 
+// The pass-1 samples of curve i: 4 per piece, at t = k / (4 n).
+GLINT_FN vec2 glint_boundary_sample(glint_light_boundary b, int i, real t, vec3 wo, vec2 alpha) {
+    return glint_standardized_slope(glint_boundary_eval(b, i, t).wi + wo, alpha);
+}
+
+// How much of the integrand's variation a chord from a to b sweeps: the polar angle it subtends,
+// with distances below 1 (one roughness, where the radial mass is still growing) counted as 1.
+GLINT_FN real glint_chord_sweep(vec2 a, vec2 b) {
+    vec2 mid = real(0.5) * (a + b);
+    return abs(a.x * b.y - a.y * b.x) / max(dot(mid, mid), real(1));
+}
+
+// Gauss-Legendre with 4 nodes on [t0, t1] of curve i: nodes 1/2 -+ 0.339981043584856 / 2 and
+// 1/2 -+ 0.861136311594053 / 2, weights 0.652145154862546 / 2 and 0.347854845137454 / 2
+// (Abramowitz and Stegun, Table 25.4).
+GLINT_FN real glint_boundary_piece(int ndf, vec3 wo, vec2 alpha, glint_light_boundary b, int i, real t0, real t1, bool tail_form) {
+    real h = t1 - t0;
+    real s = real(0.326072577431273) * (glint_boundary_integrand(ndf, wo, alpha, glint_boundary_eval(b, i, t0 + h * real(0.330009478207572)), tail_form) +
+                                        glint_boundary_integrand(ndf, wo, alpha, glint_boundary_eval(b, i, t0 + h * real(0.669990521792428)), tail_form));
+    s += real(0.173927422568727) * (glint_boundary_integrand(ndf, wo, alpha, glint_boundary_eval(b, i, t0 + h * real(0.0694318442029737)), tail_form) +
+                                    glint_boundary_integrand(ndf, wo, alpha, glint_boundary_eval(b, i, t0 + h * real(0.930568155797026)), tail_form));
+    return s * h;
+}
+
 // D_Omega over the region bounded by b, wo.z > 0. `pieces` (>= 1): pieces per straight edge; an
 // arc gets 4 times as many.
+//
+// Where the pieces go. Near the point where a curve passes u = 0 at distance d, the integrand
+// varies on a length max(d, 1) in u (like d(phi)/dt), which can be a tiny part of a long curve.
+// Pass 1 samples each curve (4 samples per piece) and measures, chord by chord, the polar angle
+// swept (glint_chord_sweep); pass 2 places the piece ends where half the sweep plus half the
+// parameter reach k / n, interpolating between samples, so that pieces crowd where the integrand
+// varies and still cover the rest. Any placement is exact (only the quadrature error changes).
 GLINT_FN real glint_integrated_ndf_boundary(int ndf, vec3 wo, vec2 alpha, glint_light_boundary b, int pieces) {
     alpha = glint_clamp_roughness(alpha);
     pieces = clamp(pieces, 1, 64);
     if (!(wo.z > real(0)) || b.count < 1) return real(0);
-    // Choose the form from the piece end points: the tail form only when the curve winds around
-    // u = 0 zero times and stays at least 1 (one roughness) away from it.
+    // Pass 1: the sweep of each curve, the winding number around u = 0, and the clearance
+    // min over chords of (distance to u = 0 - chord length / 4), which picks the form.
     real winding = real(0);
-    real min_t = real(3.0e38);
-    real max_chord = real(0);
-    vec2 first = glint_standardized_slope(glint_boundary_eval(b, 0, real(0)).wi + wo, alpha);
-    vec2 prev = first;
+    real clearance = real(3.0e38);
+    real sweep[6];
     for (int i = 0; i < b.count; ++i) {
-        int n = glint_boundary_pieces(b, i, pieces);
-        for (int k = 0; k < n; ++k) {
-            vec2 next = first;
-            if (k + 1 < n || i + 1 < b.count) {
-                int ni = (k + 1 < n) ? i : i + 1;
-                real nt = (k + 1 < n) ? real(k + 1) / real(n) : real(0);
-                next = glint_standardized_slope(glint_boundary_eval(b, ni, nt).wi + wo, alpha);
-            }
-            min_t = min(min_t, dot(prev, prev));
-            max_chord = max(max_chord, length(next - prev));
+        int m = 4 * glint_boundary_pieces(b, i, pieces);
+        vec2 prev = glint_boundary_sample(b, i, real(0), wo, alpha);
+        sweep[i] = real(0);
+        for (int k = 1; k <= m; ++k) {
+            vec2 next = glint_boundary_sample(b, i, real(k) / real(m), wo, alpha);
+            vec2 e = next - prev;
+            real e2 = dot(e, e);
+            real s = (e2 > real(0)) ? clamp(-dot(prev, e) / e2, real(0), real(1)) : real(0);
+            clearance = min(clearance, length(prev + s * e) - real(0.25) * sqrt(e2));
             winding += atan(prev.x * next.y - prev.y * next.x, dot(prev, next));
+            sweep[i] += glint_chord_sweep(prev, next);
             prev = next;
         }
     }
-    bool tail_form = abs(winding) < real(3.14159) && sqrt(min_t) - max_chord >= real(1);
-    // 4-point Gauss-Legendre on [0, 1]: nodes 1/2 -+ 0.339981043584856 / 2, 1/2 -+ 0.861136311594053 / 2,
-    // weights 0.652145154862546 / 2 and 0.347854845137454 / 2 (Abramowitz and Stegun, Table 25.4).
+    bool tail_form = abs(winding) < real(3.14159) && clearance >= real(1);
+    // Pass 2.
     real sum = real(0);
     for (int i = 0; i < b.count; ++i) {
         int n = glint_boundary_pieces(b, i, pieces);
-        real h = real(1) / real(n);
-        for (int k = 0; k < n; ++k) {
-            real t0 = real(k) * h;
-            real s = real(0);
-            s += real(0.326072577431273) * glint_boundary_integrand(ndf, wo, alpha, glint_boundary_eval(b, i, t0 + h * real(0.330009478207572)), tail_form);
-            s += real(0.326072577431273) * glint_boundary_integrand(ndf, wo, alpha, glint_boundary_eval(b, i, t0 + h * real(0.669990521792428)), tail_form);
-            s += real(0.173927422568727) * glint_boundary_integrand(ndf, wo, alpha, glint_boundary_eval(b, i, t0 + h * real(0.0694318442029737)), tail_form);
-            s += real(0.173927422568727) * glint_boundary_integrand(ndf, wo, alpha, glint_boundary_eval(b, i, t0 + h * real(0.930568155797026)), tail_form);
-            sum += s * h;
+        int m = 4 * n;
+        real dt = real(1) / real(m);
+        real mu_prev = real(0);
+        real t_start = real(0);
+        int done = 0;  // pieces integrated so far
+        vec2 prev = glint_boundary_sample(b, i, real(0), wo, alpha);
+        for (int k = 1; k <= m; ++k) {
+            vec2 next = glint_boundary_sample(b, i, real(k) * dt, wo, alpha);
+            real mu = mu_prev + real(0.5) * dt + ((sweep[i] > real(0)) ? real(0.5) * glint_chord_sweep(prev, next) / sweep[i] : real(0.5) * dt);
+            mu = (k == m) ? real(1) : mu;
+            for (int j = 0; j < 4 * 64; ++j) {  // the piece ends inside this sample interval
+                real target = real(done + 1) / real(n);
+                if (done >= n || target > mu) break;
+                real t_end = (done + 1 == n) ? real(1) : real(k - 1) * dt + dt * clamp((target - mu_prev) / max(mu - mu_prev, real(1e-30)), real(0), real(1));
+                sum += glint_boundary_piece(ndf, wo, alpha, b, i, t_start, t_end, tail_form);
+                t_start = t_end;
+                ++done;
+            }
+            mu_prev = mu;
+            prev = next;
         }
     }
     return abs(sum);
@@ -317,7 +356,7 @@ GLINT_FN glint_light_boundary glint_cone_boundary(vec3 c, real cos_r, real sin_r
         b.r[i] = vec3(real(0));
         b.range[i] = vec2(real(0));
     }
-    real h = sqrt(max(real(0), real(1) - c.z * c.z));  // horizontal extent of the axis
+    real h = length(vec2(c.x, c.y));  // horizontal extent of the axis (not sqrt(1 - c.z^2): cancels near the zenith)
     if (c.z * cos_r + h * sin_r <= real(0)) return b;
     vec3 t1 = (h > real(1e-7)) ? vec3(-c.y, c.x, real(0)) / h : vec3(real(1), real(0), real(0));
     vec3 t2 = cross(c, t1);  // t2.z = h >= 0

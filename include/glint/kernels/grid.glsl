@@ -1,0 +1,248 @@
+// glint's discrete glint NDF on anisotropic grids (DB23, as KK24 and KK25 Sec. 3.3 use it;
+// ../notes/anisotropic-grid.md in the repository that built this). Needs core.glsl,
+// binomial.glsl, microfacet.glsl. Derivation, parameters and measured figures:
+// include/glint/grid.hpp and docs/grid.md.
+//
+// The estimate for one pixel footprint and one light is R = sum over lattice points L (4, weights
+// w_L), triangle vertices t (3, barycentrics l_t) and slope-grid vertices j (4, bilinear m_j) of
+// l_t m_j c / N, where N = density x footprint area is the expected number of microfacets in
+// the footprint and c ~ b(N w_L, p_j) is drawn with the vertex's own random numbers (DB23's
+// "distributed" binomial laws). E[R] = sum_j m_j p_j. The glint BRDF is the smooth one times
+// R / E[R] (KK25 Eq. 7 with E[N_P] = N), whose mean is the smooth BRDF exactly.
+
+// The pixel footprint in uv: the ellipse of J^T J, J's rows the uv derivatives along x and y.
+struct glint_footprint {
+    real area;   // |det J|, the pixel's parallelogram in uv
+    real minor;  // semi-axis lengths of the ellipse (square roots of J^T J's eigenvalues)
+    real major;
+    real angle;  // direction of the major axis, in [0, pi)
+};
+
+GLINT_FN glint_footprint glint_footprint_from_derivatives(vec2 duvdx, vec2 duvdy) {
+    glint_footprint f;
+    real a = duvdx.x * duvdx.x + duvdy.x * duvdy.x;
+    real b = duvdx.x * duvdx.y + duvdy.x * duvdy.y;
+    real c = duvdx.y * duvdx.y + duvdy.y * duvdy.y;
+    real det = abs(duvdx.x * duvdy.y - duvdx.y * duvdy.x);
+    real half_diff = real(0.5) * (a - c);
+    real l2 = real(0.5) * (a + c) + sqrt(half_diff * half_diff + b * b);
+    f.area = det;
+    f.major = sqrt(l2);
+    f.minor = (l2 > real(0)) ? det / f.major : real(0);  // sqrt(det^2 / l2) without cancellation
+    real angle = real(0.5) * atan(real(2) * b, a - c);    // (-pi/2, pi/2]
+    f.angle = (angle < real(0)) ? angle + GLINT_PI : angle;
+    f.angle = (f.angle >= GLINT_PI) ? real(0) : f.angle;
+    return f;
+}
+
+// The lattice of grids: LOD L (cell size 2^L in uv), ratio level R (cells 2^R times longer
+// along the major axis, R = 0..4), rotation bin k (level R has 2^(R+1) bins over [0, pi), so each
+// level doubles the angular resolution of the one below: 90 degrees / 2^R as in DB23).
+GLINT_CONST(int) GLINT_MAX_RATIO_LEVEL = 4;  // aspect ratios are clamped to 2^4 = 16
+GLINT_CONST(real) GLINT_MIN_LOD = real(-24);
+GLINT_CONST(real) GLINT_MAX_LOD = real(24);
+
+struct glint_lattice {
+    vec4 weight;
+    ivec4 lod;
+    ivec4 level;
+    ivec4 bin;
+};
+
+// The four lattice points around a footprint and their weights (sum 1, continuous in the
+// footprint). In the (ratio, angle) plane, the strip between levels R0 and R0 + 1 is
+// triangulated conformingly (one coarse bin against two fine ones: triangles A, B, C below);
+// each triangle times [L0, L0 + 1] is a prism, split into three tetrahedra by the global order
+// of its vertices, so that neighbouring prisms agree on their shared faces.
+GLINT_FN glint_lattice glint_footprint_lattice(glint_footprint f, real lod_scale) {
+    real major = max(f.major, real(1e-30));
+    real minor = max(max(f.minor, major / real(16)), real(1e-30));
+    real lod = clamp(log2(minor * max(lod_scale, real(1e-30))), GLINT_MIN_LOD, GLINT_MAX_LOD);
+    real rho = clamp(log2(major / minor), real(0), real(GLINT_MAX_RATIO_LEVEL));
+    int r0 = min(int(floor(rho)), GLINT_MAX_RATIO_LEVEL - 1);
+    real tr = rho - real(r0);
+    real l0 = floor(lod);
+    real tl = lod - l0;
+    int n0 = 2 << r0;  // bins at level r0
+    real x = f.angle * real(n0) / GLINT_PI;
+    int k = min(int(floor(x)), n0 - 1);
+    real fx = x - real(k);
+    // Triangle in the (fx, tr) unit square: vertex keys level * 1024 + bin, barycentrics.
+    ivec3 key;
+    vec3 bary;
+    int kn = (k + 1 == n0) ? 0 : k + 1;
+    int t0 = 2 * k, t1 = 2 * k + 1, t2 = (2 * k + 2 == 2 * n0) ? 0 : 2 * k + 2;
+    int lo = r0 * 1024, hi = (r0 + 1) * 1024;
+    if (fx < real(0.5) * tr) {  // A: b_k, t_2k, t_2k+1
+        key = ivec3(lo + k, hi + t0, hi + t1);
+        bary = vec3(real(1) - tr, tr - real(2) * fx, real(2) * fx);
+    } else if (fx > real(1) - real(0.5) * tr) {  // C: b_k+1, t_2k+1, t_2k+2
+        real gx = real(1) - fx;
+        key = ivec3(lo + kn, hi + t1, hi + t2);
+        bary = vec3(real(1) - tr, real(2) * gx, tr - real(2) * gx);
+    } else {  // B: b_k, t_2k+1, b_k+1
+        key = ivec3(lo + k, hi + t1, lo + kn);
+        bary = vec3(real(1) - fx - real(0.5) * tr, tr, fx - real(0.5) * tr);
+    }
+    bary = max(bary, vec3(real(0)));
+    // Sort the three vertices by key (the global order the prism split needs).
+    if (key.x > key.y) { ivec2 s = ivec2(key.x, key.y); key.x = s.y; key.y = s.x; real b = bary.x; bary.x = bary.y; bary.y = b; }
+    if (key.y > key.z) { ivec2 s = ivec2(key.y, key.z); key.y = s.y; key.z = s.x; real b = bary.y; bary.y = bary.z; bary.z = b; }
+    if (key.x > key.y) { ivec2 s = ivec2(key.x, key.y); key.x = s.y; key.y = s.x; real b = bary.x; bary.x = bary.y; bary.y = b; }
+    // Prism split: v1 < v2 < v3 at L0 (unprimed) and L0 + 1 (primed).
+    glint_lattice o;
+    int L0 = int(l0);
+    if (tl <= bary.x) {  // v1, v2, v3, v1'
+        o.weight = vec4(bary.x - tl, bary.y, bary.z, tl);
+        o.lod = ivec4(L0, L0, L0, L0 + 1);
+        o.level = ivec4(key.x / 1024, key.y / 1024, key.z / 1024, key.x / 1024);
+        o.bin = ivec4(key.x & 1023, key.y & 1023, key.z & 1023, key.x & 1023);
+    } else if (tl <= bary.x + bary.y) {  // v1', v2, v3, v2'
+        o.weight = vec4(bary.x, bary.x + bary.y - tl, bary.z, tl - bary.x);
+        o.lod = ivec4(L0 + 1, L0, L0, L0 + 1);
+        o.level = ivec4(key.x / 1024, key.y / 1024, key.z / 1024, key.y / 1024);
+        o.bin = ivec4(key.x & 1023, key.y & 1023, key.z & 1023, key.y & 1023);
+    } else {  // v1', v2', v3, v3'
+        o.weight = vec4(bary.x, bary.y, real(1) - tl, tl - bary.x - bary.y);
+        o.lod = ivec4(L0 + 1, L0 + 1, L0, L0 + 1);
+        o.level = ivec4(key.x / 1024, key.y / 1024, key.z / 1024, key.z / 1024);
+        o.bin = ivec4(key.x & 1023, key.y & 1023, key.z & 1023, key.z & 1023);
+    }
+    o.weight = max(o.weight, vec4(real(0)));
+    return o;
+}
+
+// A triangle of the skewed (equilateral, side 1) grid containing q, and q's barycentrics.
+struct glint_triangle {
+    ivec2 vertex[3];
+    vec3 weight;
+};
+
+GLINT_FN glint_triangle glint_triangle_grid(vec2 q) {
+    vec2 s = vec2(q.x - q.y * real(0.577350269189625764509), q.y * real(1.15470053837925152902));  // 1/sqrt(3), 2/sqrt(3)
+    s = clamp(s, vec2(real(-1073741824)), vec2(real(1073741824)));  // keep floor() within int
+    vec2 i = floor(s);
+    vec2 f = s - i;
+    ivec2 base = ivec2(int(i.x), int(i.y));
+    glint_triangle t;
+    if (f.x + f.y < real(1)) {
+        t.vertex[0] = base;
+        t.vertex[1] = base + ivec2(1, 0);
+        t.vertex[2] = base + ivec2(0, 1);
+        t.weight = vec3(real(1) - f.x - f.y, f.x, f.y);
+    } else {
+        t.vertex[0] = base + ivec2(1, 1);
+        t.vertex[1] = base + ivec2(0, 1);
+        t.vertex[2] = base + ivec2(1, 0);
+        t.weight = vec3(f.x + f.y - real(1), real(1) - f.x, real(1) - f.y);
+    }
+    return t;
+}
+
+// The material's glint parameters.
+struct glint_grid_params {
+    real log_density;       // ln of the expected microfacets per unit uv area
+    real density_sigma;     // sigma of a per-vertex log-normal factor exp(sigma z - sigma^2 / 2); 0: off
+    real lod_scale;         // grid cell = 2^floor(log2(minor axis x lod_scale)); about 1 to 2
+    real slope_cell;        // spacing of the half-vector slope grid, absolute slope units
+    real smooth_tolerance;  // return the smooth result where R's relative sd is surely below this
+    int variant;            // GLINT_BINOMIAL_*
+    int pow_method;         // GLINT_POW_*
+    uint seed;
+};
+
+// The light as the grid sees it. kind 0: a point light, p_j from the NDF at the slope vertex
+// (p_j = slope_cell^2 x unprojected slope density / D_H, clamped to 1); kind 1: an extended light
+// (sun, sphere, rectangle, environment level) with p = D_Omega / D_H for every slope vertex.
+// `slope` is the absolute slope -(h.x, h.y) / h.z of the half vector towards the light (its
+// centre for an extended light).
+struct glint_grid_light {
+    int kind;
+    real p;
+    vec2 slope;
+    int ndf;
+    vec2 alpha;
+    real total_area;  // D_H
+};
+
+struct glint_grid_estimate {
+    real value;     // R
+    real expected;  // E[R]
+    int draws;      // binomial draws made (0 when the smooth result or 0 was returned)
+};
+
+// The bilinear slope-grid cell around s: corner slopes and weights.
+GLINT_FN vec4 glint_slope_weights(vec2 s, real cell, GLINT_OUT(ivec2) base) {
+    vec2 g = clamp(s / max(cell, real(1e-30)), vec2(real(-1073741824)), vec2(real(1073741824)));
+    vec2 i = floor(g);
+    vec2 f = g - i;
+    base = ivec2(int(i.x), int(i.y));
+    return vec4((real(1) - f.x) * (real(1) - f.y), f.x * (real(1) - f.y), (real(1) - f.x) * f.y, f.x * f.y);
+}
+
+// R for one footprint and one light.
+GLINT_FN glint_grid_estimate glint_grid_sample(vec2 uv, vec2 duvdx, vec2 duvdy, glint_grid_params g, glint_grid_light light) {
+    glint_grid_estimate o;
+    o.value = real(0);
+    o.expected = real(0);
+    o.draws = 0;
+    glint_footprint f = glint_footprint_from_derivatives(duvdx, duvdy);
+    ivec2 sbase;
+    vec4 mu = glint_slope_weights(light.slope, g.slope_cell, sbase);
+    vec4 p;
+    for (int j = 0; j < 4; ++j) {
+        ivec2 c = sbase + ivec2(j & 1, j >> 1);
+        real pj = clamp(light.p, real(0), real(1));
+        if (light.kind == 0) {
+            real area = g.slope_cell * g.slope_cell * glint_slope_area_density(light.ndf, vec2(c) * g.slope_cell, light.alpha);
+            pj = clamp(area / max(light.total_area, real(1)), real(0), real(1));
+        }
+        p[j] = pj;
+    }
+    o.expected = dot(mu, p);
+    if (!(o.expected > real(0))) return o;  // no microfacet can reflect this light: no sampling
+    real N = exp(clamp(g.log_density, real(-80), real(80))) * f.area;
+    // Var(R) <= sum_j m_j^2 p_j (1 - p_j) / N + (exp(sigma^2) - 1) E[R]^2 (the lattice and
+    // triangle weights only lower it: their squares sum to at most 1).
+    real var_bound = dot(mu * mu, p * (vec4(real(1)) - p)) / max(N, real(1e-30)) +
+                     (exp(g.density_sigma * g.density_sigma) - real(1)) * o.expected * o.expected;
+    if (var_bound <= g.smooth_tolerance * g.smooth_tolerance * o.expected * o.expected) {
+        o.value = o.expected;
+        return o;
+    }
+    if (!(N > real(1e-30))) return o;  // no footprint, no microfacets
+    glint_lattice lat = glint_footprint_lattice(f, g.lod_scale);
+    for (int l = 0; l < 4; ++l) {
+        real wl = lat.weight[l];
+        if (!(wl > real(0))) continue;
+        real cell = exp2(real(lat.lod[l]));
+        real angle = real(lat.bin[l]) * GLINT_PI / real(2 << lat.level[l]);
+        real ca = cos(angle), sa = sin(angle);
+        vec2 r = vec2(ca * uv.x + sa * uv.y, -sa * uv.x + ca * uv.y);
+        glint_triangle tri = glint_triangle_grid(vec2(r.x / (cell * exp2(real(lat.level[l]))), r.y / cell));
+        uint lattice_key = (uint(lat.lod[l] + 64) | (uint(lat.level[l]) << 8u) | (uint(lat.bin[l]) << 12u)) ^ g.seed;
+        for (int t = 0; t < 3; ++t) {
+            real wt = tri.weight[t];
+            if (!(wt > real(0))) continue;
+            uvec3 hv = glint_pcg3d(uvec3(uint(tri.vertex[t].x), uint(tri.vertex[t].y), lattice_key));
+            real Nv = N * wl;
+            if (g.density_sigma > real(0))
+                Nv *= exp(g.density_sigma * glint_normal_quantile(glint_open_unit_from_bits(hv.z)) - real(0.5) * g.density_sigma * g.density_sigma);
+            for (int j = 0; j < 4; ++j) {
+                if (!(mu[j] > real(0)) || !(p[j] > real(0))) continue;
+                ivec2 c = sbase + ivec2(j & 1, j >> 1);
+                uvec3 hs = glint_pcg3d(uvec3(hv.x ^ uint(c.x), hv.y ^ uint(c.y), hv.z));
+                glint_binomial b = glint_binomial_variant(g.variant, Nv, p[j], glint_open_unit_from_bits(hs.x),
+                                                          glint_open_unit_from_bits(hs.y), g.pow_method);
+                o.value += wt * mu[j] * b.positive / N;  // the draw itself carries w_L
+                ++o.draws;
+            }
+        }
+    }
+    return o;
+}
+
+// R / E[R], the factor that turns the smooth BRDF into the glint BRDF (0 if E[R] = 0).
+GLINT_FN real glint_modulation(glint_grid_estimate e) {
+    return (e.expected > real(0)) ? e.value / e.expected : real(0);
+}

@@ -1,0 +1,104 @@
+// Double-precision references for the microfacet tests: D_Omega (KK25 Eq. 9) by nested adaptive
+// Gauss-Kronrod quadrature over the light itself, independent of glint's boundary method. The
+// integration domain is split at the mirror direction's position on the light, so that a lobe
+// much narrower than the light sits at a corner of the sub-domains where the adaptive rule
+// finds it, and limited exactly to the part above the horizon.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include <boost/math/quadrature/gauss_kronrod.hpp>
+
+#include <glint/microfacet.hpp>
+
+namespace glint_test {
+
+using dvec3 = glm::dvec3;
+using dvec2 = glm::dvec2;
+
+// 1D adaptive Gauss-Kronrod over [a, b] with interior break points.
+template <class F>
+double integrate_1d(F f, double a, double b, std::vector<double> breaks, double tol = 1e-11) {
+    if (!(b > a)) return 0.0;
+    breaks.push_back(a), breaks.push_back(b);
+    std::sort(breaks.begin(), breaks.end());
+    double s = 0;
+    for (std::size_t i = 0; i + 1 < breaks.size(); ++i) {
+        const double lo = std::max(a, breaks[i]), hi = std::min(b, breaks[i + 1]);
+        if (hi > lo) s += boost::math::quadrature::gauss_kronrod<double, 31>::integrate(f, lo, hi, 25, tol);
+    }
+    return s;
+}
+
+// D(h) / (4 <h, wi>) for light direction wi (0 below the horizon).
+inline double lobe(glint::ndf d, const dvec3& wo, const dvec2& alpha, const dvec3& wi) {
+    if (wi.z <= 0) return 0.0;
+    const dvec3 h = glm::normalize(wi + wo);
+    return glint::ndf_value(d, h, alpha) / (4 * glm::dot(h, wi));
+}
+
+inline dvec3 mirror(const dvec3& wo) { return {-wo.x, -wo.y, wo.z}; }
+
+// Cone: polar coordinates (theta, psi) around the axis; theta limited to the horizon exactly.
+inline double reference_cone(glint::ndf d, const dvec3& wo, const dvec2& alpha, const dvec3& c, double radius) {
+    const dvec3 t1 = std::hypot(c.x, c.y) > 1e-9 ? glm::normalize(dvec3(-c.y, c.x, 0)) : dvec3(1, 0, 0);
+    const dvec3 t2 = glm::cross(c, t1);
+    const dvec3 r = mirror(wo);
+    const double theta_r = std::acos(std::clamp(glm::dot(r, c), -1.0, 1.0));
+    const double psi_r = std::atan2(glm::dot(r, t2), glm::dot(r, t1));
+    std::vector<double> psi_breaks{psi_r < 0 ? psi_r + 2 * M_PI : psi_r};
+    std::vector<double> theta_breaks{theta_r};
+    auto outer = [&](double psi) {
+        const dvec3 dir = std::cos(psi) * t1 + std::sin(psi) * t2;
+        // wi.z = cos(theta) c.z + sin(theta) dir.z >= 0 on theta in [0, radius] <= pi/2: an interval.
+        const double A = c.z, B = dir.z;
+        double lo = 0, hi = radius;
+        if (A >= 0 && B < 0) hi = std::min(hi, std::atan2(A, -B));
+        if (A < 0) {
+            if (B <= 0) return 0.0;
+            lo = std::atan2(-A, B);
+        }
+        auto inner = [&](double theta) { return lobe(d, wo, alpha, std::cos(theta) * c + std::sin(theta) * dir) * std::sin(theta); };
+        return integrate_1d(inner, lo, hi, theta_breaks);
+    };
+    return integrate_1d(outer, 0.0, 2 * M_PI, psi_breaks, 1e-10);
+}
+
+// Rectangle p0 + x e1 + y e2, (x, y) in [0, 1]^2: dw = |cross(e1, e2) . P| / |P|^3 dx dy; y limited
+// to P.z >= 0 exactly; split at the point where the mirror direction meets the rectangle.
+inline double reference_rect(glint::ndf d, const dvec3& wo, const dvec2& alpha, const dvec3& p0, const dvec3& e1, const dvec3& e2) {
+    const dvec3 n = glm::cross(e1, e2);
+    if (!(glm::dot(n, p0) < 0)) return 0.0;
+    const dvec3 r = mirror(wo);
+    std::vector<double> xb, yb;
+    const double rn = glm::dot(r, n);
+    if (rn != 0) {
+        const double lambda = glm::dot(p0, n) / rn;
+        if (lambda > 0) {
+            const dvec3 q = lambda * r - p0;
+            // solve q = x e1 + y e2 by least squares on the plane
+            const double a11 = glm::dot(e1, e1), a12 = glm::dot(e1, e2), a22 = glm::dot(e2, e2);
+            const double b1 = glm::dot(q, e1), b2 = glm::dot(q, e2), det = a11 * a22 - a12 * a12;
+            xb.push_back((b1 * a22 - b2 * a12) / det), yb.push_back((a11 * b2 - a12 * b1) / det);
+        }
+    }
+    auto outer = [&](double x) {
+        // P.z = p0.z + x e1.z + y e2.z >= 0
+        double lo = 0, hi = 1;
+        const double z0 = p0.z + x * e1.z;
+        if (e2.z > 0) lo = std::max(lo, -z0 / e2.z);
+        else if (e2.z < 0) hi = std::min(hi, -z0 / e2.z);
+        else if (z0 < 0) return 0.0;
+        auto inner = [&](double y) {
+            const dvec3 P = p0 + x * e1 + y * e2;
+            const double len = glm::length(P);
+            return lobe(d, wo, alpha, P / len) * std::fabs(glm::dot(n, P)) / (len * len * len);
+        };
+        return integrate_1d(inner, lo, hi, yb);
+    };
+    return integrate_1d(outer, 0.0, 1.0, xb, 1e-10);
+}
+
+}  // namespace glint_test

@@ -21,7 +21,7 @@
 //             = [1 - W e^-T + (a sqrt(pi) / 2)(erfcx(1 / a) - e^-T erfcx(W / a))] / (2 pi);
 //             the tail is e^-T [W + (a sqrt(pi) / 2) erfcx(W / a)] / (2 pi).
 // D_H is the tail at T = 0 averaged over the ray direction (times 2 pi): closed form if
-// isotropic, e.g. GGX 1 + a^2 atanh(sqrt(1 - a^2)) / sqrt(1 - a^2); a 16-node midpoint rule over
+// isotropic, e.g. GGX 1 + a^2 atanh(sqrt(1 - a^2)) / sqrt(1 - a^2); a 32-node midpoint rule over
 // the direction otherwise.
 // D_Omega is the unprojected area of the half vectors that reflect wo into the light, a region
 // of u-space bounded by the image of the light's outline. In polar coordinates around u = 0 the
@@ -133,7 +133,7 @@ real total_area(ndf d, const vec2_t<real>& alpha) {
 // [0, pi/2]). `pieces` sets the quadrature (4 x pieces pieces on the circle).
 template <class real>
 real integrated_ndf_cone(ndf d, const vec3_t<real>& wo, const vec2_t<real>& alpha, const vec3_t<real>& axis, real radius_angle,
-                         int pieces = 4) {
+                         int pieces = 8) {
     using std::cos;
     using std::sin;
     return detail::mk<real>::glint_integrated_ndf_cone(static_cast<int>(d), wo, alpha, axis, cos(radius_angle), sin(radius_angle),
@@ -144,7 +144,7 @@ real integrated_ndf_cone(ndf d, const vec3_t<real>& wo, const vec2_t<real>& alph
 // relative to the shading point (tangent frame), emitting toward cross(e1, e2). `pieces` per edge.
 template <class real>
 real integrated_ndf_rect(ndf d, const vec3_t<real>& wo, const vec2_t<real>& alpha, const vec3_t<real>& p0, const vec3_t<real>& e1,
-                         const vec3_t<real>& e2, int pieces = 4) {
+                         const vec3_t<real>& e2, int pieces = 8) {
     return detail::mk<real>::glint_integrated_ndf_rect(static_cast<int>(d), wo, alpha, p0, e1, e2, pieces);
 }
 

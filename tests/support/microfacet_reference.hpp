@@ -20,14 +20,14 @@ using dvec2 = glm::dvec2;
 
 // 1D adaptive Gauss-Kronrod over [a, b] with interior break points.
 template <class F>
-double integrate_1d(F f, double a, double b, std::vector<double> breaks, double tol = 1e-11) {
+double integrate_1d(F f, double a, double b, std::vector<double> breaks, double tol = 1e-10) {
     if (!(b > a)) return 0.0;
     breaks.push_back(a), breaks.push_back(b);
     std::sort(breaks.begin(), breaks.end());
     double s = 0;
     for (std::size_t i = 0; i + 1 < breaks.size(); ++i) {
         const double lo = std::max(a, breaks[i]), hi = std::min(b, breaks[i + 1]);
-        if (hi > lo) s += boost::math::quadrature::gauss_kronrod<double, 31>::integrate(f, lo, hi, 25, tol);
+        if (hi > lo) s += boost::math::quadrature::gauss_kronrod<double, 31>::integrate(f, lo, hi, 12, tol);
     }
     return s;
 }
@@ -63,7 +63,7 @@ inline double reference_cone(glint::ndf d, const dvec3& wo, const dvec2& alpha, 
         auto inner = [&](double theta) { return lobe(d, wo, alpha, std::cos(theta) * c + std::sin(theta) * dir) * std::sin(theta); };
         return integrate_1d(inner, lo, hi, theta_breaks);
     };
-    return integrate_1d(outer, 0.0, 2 * M_PI, psi_breaks, 1e-10);
+    return integrate_1d(outer, 0.0, 2 * M_PI, psi_breaks, 1e-9);
 }
 
 // Rectangle p0 + x e1 + y e2, (x, y) in [0, 1]^2: dw = |cross(e1, e2) . P| / |P|^3 dx dy; y limited
@@ -98,7 +98,7 @@ inline double reference_rect(glint::ndf d, const dvec3& wo, const dvec2& alpha, 
         };
         return integrate_1d(inner, lo, hi, yb);
     };
-    return integrate_1d(outer, 0.0, 1.0, xb, 1e-10);
+    return integrate_1d(outer, 0.0, 1.0, xb, 1e-9);
 }
 
 }  // namespace glint_test

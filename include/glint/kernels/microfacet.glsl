@@ -149,6 +149,16 @@ GLINT_FN real glint_radial_mass_over_t(int ndf, real T, real a2) {
     if (!(T > real(1e-20))) return GLINT_INV_TWO_PI;
     real W = sqrt(real(1) + a2 * T);
     if (ndf == GLINT_NDF_BECKMANN) {
+        if (T * max(a2, real(1)) <= real(0.5)) {
+            // The closed form cancels for small T: 4-point Gauss-Legendre of the mean of
+            // sqrt(1 + a2 t) exp(-t) over [0, T] instead (the nearest singularity, t = -1/a2, is
+            // 2 interval lengths away: error below 1e-8, below the erfc fit's 1.2e-7).
+            real t1 = T * real(0.0694318442029737), t2 = T * real(0.330009478207572);
+            real t3 = T * real(0.669990521792428), t4 = T * real(0.930568155797026);
+            real m = real(0.173927422568727) * (sqrt(real(1) + a2 * t1) * exp(-t1) + sqrt(real(1) + a2 * t4) * exp(-t4)) +
+                     real(0.326072577431273) * (sqrt(real(1) + a2 * t2) * exp(-t2) + sqrt(real(1) + a2 * t3) * exp(-t3));
+            return GLINT_INV_TWO_PI * m;
+        }
         real a = sqrt(a2);
         real e = exp(-T);
         real m = -glint_expm1_nonpositive(-T) - e * a2 * T / (W + real(1)) +
@@ -158,7 +168,9 @@ GLINT_FN real glint_radial_mass_over_t(int ndf, real T, real a2) {
     real d = W + real(1) + T;
     real first = (real(1) - a2 / (W + real(1))) / (real(1) + T);
     real z = (real(1) - a2) * (T / d) * (T / d);
-    real one_minus_z = ((W + real(1)) * (W + real(1)) + real(2) * T * (W + real(1)) + a2 * T * T) / (d * d);
+    real wd = (W + real(1)) / d;
+    real td = T / d;
+    real one_minus_z = wd * wd + real(2) * td * wd + a2 * td * td;  // no overflow up to T = 1e30
     return GLINT_INV_TWO_PI * (first + a2 * glint_atanh_ratio(z, one_minus_z) / d);
 }
 
@@ -174,18 +186,19 @@ GLINT_FN real glint_radial_tail(int ndf, real T, real a2) {
 
 // D_H = integral of D(m) over the hemisphere = E[sqrt(1 + |s|^2)] under the slope density (>= 1).
 // Isotropic: one closed form. Anisotropic: the average of 2 pi tail(0) over phi by the midpoint
-// rule on [0, pi/2] with 16 nodes (a2(phi) is smooth, even and pi-periodic, so the rule converges
-// geometrically; measured error in docs/microfacet.md).
+// rule on [0, pi/2] with 32 nodes (a2(phi) is smooth, even and pi-periodic, so the rule converges
+// geometrically: measured relative error 5e-10 for GGX at aspect ratio 16, 2e-8 at 1000; 1e-14
+// for Beckmann). Call it once per material, not per pixel.
 GLINT_FN real glint_total_area(int ndf, vec2 alpha) {
     alpha = glint_clamp_roughness(alpha);
     if (alpha.x == alpha.y) return real(2) * GLINT_PI * glint_radial_tail(ndf, real(0), alpha.x * alpha.x);
     real sum = real(0);
-    for (int k = 0; k < 16; ++k) {
-        real phi = (real(k) + real(0.5)) * (real(0.5) * GLINT_PI / real(16));
+    for (int k = 0; k < 32; ++k) {
+        real phi = (real(k) + real(0.5)) * (real(0.5) * GLINT_PI / real(32));
         real c = cos(phi), s = sin(phi);
         sum += glint_radial_tail(ndf, real(0), alpha.x * alpha.x * c * c + alpha.y * alpha.y * s * s);
     }
-    return real(2) * GLINT_PI * sum / real(16);
+    return real(2) * GLINT_PI * sum / real(32);
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -233,23 +246,26 @@ GLINT_FN glint_boundary_point glint_boundary_eval(glint_light_boundary b, int i,
     return o;
 }
 
-// The standardized slope of the half vector of (wi, wo), unnormalised v = wi + wo.
+// The standardized slope of the half vector of (wi, wo), unnormalised v = wi + wo; components
+// clamped to 1e15 (T <= 1e30) so that half vectors at the horizon stay finite.
 GLINT_FN vec2 glint_standardized_slope(vec3 v, vec2 alpha) {
     real z = max(v.z, real(1e-30));
-    return vec2(v.x / (z * alpha.x), v.y / (z * alpha.y));
+    return clamp(vec2(v.x / alpha.x, v.y / alpha.y) / z, vec2(real(-1e15)), vec2(real(1e15)));
 }
 
-// The integrand at one boundary point: (mass(T)/T or -tail(T)/T) times (u x du/dt).
+// The integrand at one boundary point: mass(T) (or -tail(T)) times d phi / dt, where
+// phi = atan2(v.y / ay, v.x / ax) is the polar angle of u (v.z cancels, so half vectors at the
+// horizon, T -> inf, are harmless).
 GLINT_FN real glint_boundary_integrand(int ndf, vec3 wo, vec2 alpha, glint_boundary_point bp, bool tail_form) {
     vec3 v = bp.wi + wo;
-    real z = max(v.z, real(1e-30));
-    vec2 u = glint_standardized_slope(v, alpha);
-    real T = dot(u, u);
-    real S = (v.x * v.x + v.y * v.y) / (z * z);
-    real a2 = (T > real(1e-30)) ? min(S / T, max(alpha.x * alpha.x, alpha.y * alpha.y)) : alpha.x * alpha.x;
-    real cross_term = (v.x * bp.dwi.y - v.y * bp.dwi.x) / (z * z * alpha.x * alpha.y);
-    real f = tail_form ? -glint_radial_tail(ndf, T, a2) / max(T, real(1e-30)) : glint_radial_mass_over_t(ndf, T, a2);
-    return f * cross_term;
+    vec2 g = vec2(v.x / alpha.x, v.y / alpha.y);
+    real q = dot(g, g);  // T v.z^2
+    if (!(q > real(0))) return real(0);
+    real T = min(q / max(v.z * v.z, real(1e-37)), real(1e30));
+    real a2 = (v.x * v.x + v.y * v.y) / q;
+    real dphi = (v.x * bp.dwi.y - v.y * bp.dwi.x) / (alpha.x * alpha.y * q);
+    real f = tail_form ? -glint_radial_tail(ndf, T, a2) : glint_radial_mass_over_t(ndf, T, a2) * T;
+    return f * dphi;
 }
 
 GLINT_FN int glint_boundary_pieces(glint_light_boundary b, int i, int pieces) {

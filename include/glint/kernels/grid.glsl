@@ -36,8 +36,8 @@ GLINT_FN glint_footprint glint_footprint_from_derivatives(vec2 duvdx, vec2 duvdy
 }
 
 // The lattice of grids: LOD L (cell size 2^L in uv), ratio level R (cells 2^R times longer
-// along the major axis, R = 0..4), rotation bin k (level R has 2^(R+1) bins over [0, pi), so each
-// level doubles the angular resolution of the one below: 90 degrees / 2^R as in DB23).
+// along the major axis, R = 0..4), rotation bin k (level 0: one bin, isotropic; level R >= 1:
+// 2^(R+1) bins over [0, pi), 90 degrees / 2^R as in DB23, each level doubling the one below).
 GLINT_CONST(int) GLINT_MAX_RATIO_LEVEL = 4;  // aspect ratios are clamped to 2^4 = 16
 GLINT_CONST(real) GLINT_MIN_LOD = real(-24);
 GLINT_CONST(real) GLINT_MAX_LOD = real(24);
@@ -51,7 +51,8 @@ struct glint_lattice {
 
 // The four lattice points around a footprint and their weights (sum 1, continuous in the
 // footprint). In the (ratio, angle) plane, the strip between levels R0 and R0 + 1 is
-// triangulated conformingly (one coarse bin against two fine ones: triangles A, B, C below);
+// triangulated conformingly (one coarse bin against two fine ones: triangles A, B, C below;
+// between levels 0 and 1 a fan from the single isotropic vertex);
 // each triangle times [L0, L0 + 1] is a prism, split into three tetrahedra by the global order
 // of its vertices, so that neighbouring prisms agree on their shared faces.
 GLINT_FN glint_lattice glint_footprint_lattice(glint_footprint f, real lod_scale) {
@@ -63,26 +64,36 @@ GLINT_FN glint_lattice glint_footprint_lattice(glint_footprint f, real lod_scale
     real tr = rho - real(r0);
     real l0 = floor(lod);
     real tl = lod - l0;
-    int n0 = 2 << r0;  // bins at level r0
-    real x = f.angle * real(n0) / GLINT_PI;
-    int k = min(int(floor(x)), n0 - 1);
-    real fx = x - real(k);
-    // Triangle in the (fx, tr) unit square: vertex keys level * 1024 + bin, barycentrics.
+    // Triangle in the (angle, tr) strip: vertex keys level * 1024 + bin, barycentrics.
     ivec3 key;
     vec3 bary;
-    int kn = (k + 1 == n0) ? 0 : k + 1;
-    int t0 = 2 * k, t1 = 2 * k + 1, t2 = (2 * k + 2 == 2 * n0) ? 0 : 2 * k + 2;
     int lo = r0 * 1024, hi = (r0 + 1) * 1024;
-    if (fx < real(0.5) * tr) {  // A: b_k, t_2k, t_2k+1
-        key = ivec3(lo + k, hi + t0, hi + t1);
-        bary = vec3(real(1) - tr, tr - real(2) * fx, real(2) * fx);
-    } else if (fx > real(1) - real(0.5) * tr) {  // C: b_k+1, t_2k+1, t_2k+2
-        real gx = real(1) - fx;
-        key = ivec3(lo + kn, hi + t1, hi + t2);
-        bary = vec3(real(1) - tr, real(2) * gx, tr - real(2) * gx);
-    } else {  // B: b_k, t_2k+1, b_k+1
-        key = ivec3(lo + k, hi + t1, lo + kn);
-        bary = vec3(real(1) - fx - real(0.5) * tr, tr, fx - real(0.5) * tr);
+    if (r0 == 0) {
+        // Level 0 is isotropic: one vertex whatever the angle (which is ill-defined for round
+        // footprints), fanned to level 1's 4 bins: weights 1 - tr and tr split linearly in angle.
+        real x = f.angle * real(4) / GLINT_PI;
+        int j = min(int(floor(x)), 3);
+        real fx = x - real(j);
+        key = ivec3(lo, hi + j, hi + ((j + 1) & 3));
+        bary = vec3(real(1) - tr, tr * (real(1) - fx), tr * fx);
+    } else {
+        int n0 = 2 << r0;  // bins at level r0 >= 1 (level 1: 4, as DB23's 45 degrees)
+        real x = f.angle * real(n0) / GLINT_PI;
+        int k = min(int(floor(x)), n0 - 1);
+        real fx = x - real(k);
+        int kn = (k + 1 == n0) ? 0 : k + 1;
+        int t0 = 2 * k, t1 = 2 * k + 1, t2 = (2 * k + 2 == 2 * n0) ? 0 : 2 * k + 2;
+        if (fx < real(0.5) * tr) {  // A: b_k, t_2k, t_2k+1
+            key = ivec3(lo + k, hi + t0, hi + t1);
+            bary = vec3(real(1) - tr, tr - real(2) * fx, real(2) * fx);
+        } else if (fx > real(1) - real(0.5) * tr) {  // C: b_k+1, t_2k+1, t_2k+2
+            real gx = real(1) - fx;
+            key = ivec3(lo + kn, hi + t1, hi + t2);
+            bary = vec3(real(1) - tr, real(2) * gx, tr - real(2) * gx);
+        } else {  // B: b_k, t_2k+1, b_k+1
+            key = ivec3(lo + k, hi + t1, lo + kn);
+            bary = vec3(real(1) - fx - real(0.5) * tr, tr, fx - real(0.5) * tr);
+        }
     }
     bary = max(bary, vec3(real(0)));
     // Sort the three vertices by key (the global order the prism split needs).
@@ -201,7 +212,7 @@ GLINT_FN glint_grid_estimate glint_grid_sample(vec2 uv, vec2 duvdx, vec2 duvdy, 
     }
     o.expected = dot(mu, p);
     if (!(o.expected > real(0))) return o;  // no microfacet can reflect this light: no sampling
-    real N = exp(clamp(g.log_density, real(-80), real(80))) * f.area;
+    real N = min(exp(clamp(g.log_density, real(-80), real(80))) * f.area, real(1e30));  // finite in float
     // Var(R) <= sum_j m_j^2 p_j (1 - p_j) / N + (exp(sigma^2) - 1) E[R]^2 (the lattice and
     // triangle weights only lower it: their squares sum to at most 1).
     real var_bound = dot(mu * mu, p * (vec4(real(1)) - p)) / max(N, real(1e-30)) +

@@ -1,0 +1,239 @@
+// The grid's deterministic properties: lattice weights (non-negative, sum 1, continuous across
+// every kind of lattice boundary), triangle-grid barycentrics (linear precision, hence
+// continuity), determinism, continuity of R as the footprint moves, the smooth-result gate and
+// its bound, point-light expectations, and hard inputs.
+#include <doctest/doctest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <string>
+#include <tuple>
+#include <vector>
+
+#include <glint/grid.hpp>
+
+#include "../support/grid_scene.hpp"
+
+namespace {
+
+using K = glint::detail::glsl::grid_kernels<float>;
+using lattice_map = std::map<std::tuple<int, int, int>, double>;
+
+glm::vec2 random_unit(std::uint32_t i, std::uint32_t salt) {
+    const glm::uvec3 h = glint::pcg3d(glm::uvec3(i, salt, 0x9e1u));
+    return {glint::unit_from_bits<float>(h.x), glint::unit_from_bits<float>(h.y)};
+}
+
+// The footprint with major axis `major` along `angle`, aspect ratio `ratio`.
+void footprint(float major, float ratio, float angle, glm::vec2& dx, glm::vec2& dy) {
+    dx = glm::vec2(std::cos(angle), std::sin(angle)) * major;
+    dy = glm::vec2(-std::sin(angle), std::cos(angle)) * (major / ratio);
+}
+
+lattice_map weights_of(float major, float ratio, float angle) {
+    glm::vec2 dx, dy;
+    footprint(major, ratio, angle, dx, dy);
+    const auto l = glint::lattice_of(dx, dy, 1.5f);
+    lattice_map m;
+    for (int i = 0; i < 4; ++i) m[{l.lod[i], l.level[i], l.bin[i]}] += static_cast<double>(l.weight[i]);
+    return m;
+}
+
+double l1_distance(const lattice_map& a, const lattice_map& b) {
+    double d = 0;
+    for (const auto& [k, w] : a) d += std::fabs(w - (b.count(k) ? b.at(k) : 0.0));
+    for (const auto& [k, w] : b)
+        if (!a.count(k)) d += w;
+    return d;
+}
+
+}  // namespace
+
+TEST_CASE("lattice: weights are non-negative, sum to 1, and are continuous across LOD, ratio, angle and triangle boundaries") {
+    double worst_sum = 0, worst_jump = 0;
+    int negative = 0;
+    const float eps = 1e-4f;
+    // Random footprints, and footprints placed on every kind of boundary: integer LOD, integer
+    // log2 ratio, rotation bin edges of each level, and the A/B/C triangle edges.
+    std::vector<std::tuple<float, float, float>> cases;
+    for (std::uint32_t i = 0; i < 4000; ++i) {
+        const glm::vec2 u = random_unit(i, 1), v = random_unit(i, 2);
+        cases.emplace_back(std::exp2(-10.0f + 20.0f * u.x), std::exp2(5.0f * u.y), 3.14159265f * v.x);
+    }
+    for (int lod = -3; lod <= 3; ++lod)
+        for (int level = 0; level <= 4; ++level)
+            for (int k = 0; k < 16; ++k) {
+                const float ratio = std::exp2(static_cast<float>(level));
+                const float minor = std::exp2(static_cast<float>(lod)) / 1.5f;
+                cases.emplace_back(minor * ratio, ratio, 3.14159265f * static_cast<float>(k) / 16.0f);
+                cases.emplace_back(minor * ratio, ratio * 1.3f, 3.14159265f * (static_cast<float>(k) + 0.3f) / 16.0f);
+            }
+    for (const auto& [major, ratio, angle] : cases) {
+        const lattice_map w = weights_of(major, ratio, angle);
+        double sum = 0;
+        for (const auto& kv : w) sum += kv.second, negative += kv.second < 0;
+        worst_sum = std::max(worst_sum, std::fabs(sum - 1));
+        // Perturbations of relative size eps in each parameter: the weights move by O(eps).
+        for (const auto& [dm, dr, da] : {std::make_tuple(1 + eps, 1.0f, 0.0f), std::make_tuple(1 - eps, 1.0f, 0.0f),
+                                          std::make_tuple(1.0f, 1 + eps, 0.0f), std::make_tuple(1.0f, 1 - eps, 0.0f),
+                                          std::make_tuple(1.0f, 1.0f, eps), std::make_tuple(1.0f, 1.0f, -eps)}) {
+            const float a2 = angle + da < 0 ? angle + da + 3.14159265f : angle + da;
+            worst_jump = std::max(worst_jump, l1_distance(w, weights_of(major * dm, std::max(1.0f, ratio * dr), a2)) / static_cast<double>(eps));
+        }
+    }
+    MESSAGE(cases.size() << " footprints: max |sum - 1| " << worst_sum << ", max L1 change of the weights per unit relative change "
+                         << worst_jump);
+    CHECK(negative == 0);
+    CHECK(worst_sum < 1e-6);
+    // The weights are piecewise linear in (log2 minor, log2 ratio, angle / bin width); the steepest
+    // slope is 2 (the triangles' 2 fx) times 32 bins / pi per radian at level 4, plus float
+    // rounding of the footprint. A discontinuity would show as a jump of order 1 / eps = 1e4.
+    CHECK(worst_jump < 100);
+}
+
+TEST_CASE("triangle grid: barycentrics reproduce the point (so interpolation is continuous across edges)") {
+    double worst = 0;
+    for (std::uint32_t i = 0; i < 100000; ++i) {
+        const glm::vec2 q = (random_unit(i, 3) - 0.5f) * 200.0f;
+        const auto t = K::glint_triangle_grid(q);
+        glm::dvec2 r(0);
+        double sum = 0;
+        for (int k = 0; k < 3; ++k) {
+            const glm::dvec2 s(t.vertex[k].x, t.vertex[k].y);
+            const glm::dvec2 pos(s.x + 0.5 * s.y, s.y * 0.8660254037844386);  // unskewed vertex position
+            r += static_cast<double>(t.weight[k]) * pos;
+            sum += static_cast<double>(t.weight[k]);
+            CHECK(t.weight[k] >= 0.0f);
+        }
+        worst = std::max({worst, std::fabs(sum - 1), glm::length(r - glm::dvec2(q))});
+    }
+    MESSAGE("max |sum of weights - 1| or |interpolated position - q|: " << worst);
+    CHECK(worst < 1e-4);
+}
+
+TEST_CASE("grid: the same inputs give the same output, other seeds other glints") {
+    glint_test::grid_scene s;
+    s.kind = glint_test::light_kind::sphere, s.log_density = 4.0f, s.footprint = 0.5f;
+    s.prepare();
+    int differing_seeds = 0;
+    for (std::uint32_t i = 0; i < 200; ++i) {
+        const glm::vec2 uv = random_unit(i, 4) * 50.0f;
+        const auto a = s.estimate(i, uv), b = s.estimate(i, uv), c = s.estimate(i + 1000, uv);
+        CHECK(a.value == b.value);
+        CHECK(a.draws == b.draws);
+        differing_seeds += a.value != c.value;
+    }
+    CHECK(differing_seeds > 150);
+}
+
+TEST_CASE("grid: R is continuous as the footprint slides over the surface (no jumps between cells)") {
+    // R along a line crossing about 20 cells in steps of 1e-3 of a cell: with piecewise-linear
+    // interpolation a step moves R by about 1e-3 of its range; a change of vertices or random
+    // numbers at a cell edge (a nearest-vertex lookup) would jump by a sizeable part of it.
+    glint_test::grid_scene s;
+    s.kind = glint_test::light_kind::sphere, s.log_density = 3.0f, s.footprint = 1.0f, s.alpha = 0.1f;
+    s.prepare();
+    glm::vec2 dx, dy;
+    s.derivatives(dx, dy);
+    const auto g = s.params(11u);
+    double lo = 1e30, hi = -1e30, max_step = 0, prev = 0;
+    for (int i = 0; i <= 20000; ++i) {
+        const glm::vec2 uv = glm::vec2(3.0f, 1.0f) + static_cast<float>(i) * 1e-3f * glm::vec2(0.83f, 0.56f);
+        const double r = static_cast<double>(glint::grid_sample(uv, dx, dy, g, s.light).value);
+        lo = std::min(lo, r), hi = std::max(hi, r);
+        if (i > 0) max_step = std::max(max_step, std::fabs(r - prev));
+        prev = r;
+    }
+    MESSAGE("range of R along the path " << lo << " .. " << hi << ", largest step " << max_step);
+    REQUIRE(hi > lo);
+    CHECK(max_step < 0.01 * (hi - lo));
+}
+
+TEST_CASE("grid: the smooth-result gate returns E[R] without drawing exactly where its bound is below the tolerance, and the bound holds") {
+    glint_test::grid_scene s;
+    s.kind = glint_test::light_kind::sphere, s.footprint = 1.0f, s.alpha = 0.2f;
+    s.prepare();
+    glm::vec2 dx, dy;
+    s.derivatives(dx, dy);
+    const double area = std::fabs(static_cast<double>(dx.x * dy.y - dx.y * dy.x));
+    const double tol = 0.05;
+    // The bound (1 - p) / (N p) < tol^2 holds from N > (1 - p) / (p tol^2).
+    const double n_gate = (1 - static_cast<double>(s.p)) / (static_cast<double>(s.p) * tol * tol);
+    for (double factor : {0.5, 0.9, 1.1, 2.0}) {
+        glint::grid_params<float> g = s.params(5u);
+        g.smooth_tolerance = static_cast<float>(tol);
+        g.log_density = static_cast<float>(std::log(factor * n_gate / area));
+        double sum = 0, sq = 0;
+        int drew = 0;
+        const int n = 4000;
+        for (int i = 0; i < n; ++i) {
+            g.seed = static_cast<std::uint32_t>(i) * 747796405u;
+            const auto e = glint::grid_sample(random_unit(static_cast<std::uint32_t>(i), 6) * 100.0f, dx, dy, g, s.light);
+            const double m = static_cast<double>(glint::modulation(e));
+            sum += m, sq += m * m, drew += e.draws > 0;
+        }
+        const double mean = sum / n, sd = std::sqrt(std::max(0.0, sq / n - mean * mean));
+        MESSAGE("N = " << factor << " x the gate: " << drew << " of " << n << " sampled, relative sd " << sd);
+        if (factor > 1) {
+            CHECK(drew == 0);
+            CHECK(sd == 0.0);
+        } else {
+            CHECK(drew == n);
+            // Just below the gate the relative sd must still be below the bound, here
+            // sqrt((1 - p) / (N p)) = tol / sqrt(factor).
+            CHECK(sd <= tol / std::sqrt(factor));
+        }
+    }
+}
+
+TEST_CASE("grid: point lights expect the bilinear mix of the slope cell's corner probabilities; lights that cannot reflect cost nothing") {
+    glint_test::grid_scene s;
+    s.kind = glint_test::light_kind::point, s.alpha = 0.3f;
+    s.prepare();
+    const auto e = s.estimate(3u, glm::vec2(1.0f));
+    // Recompute E[R] from the definition.
+    const float cell = 0.02f;
+    const glm::vec2 slope = s.light.slope / cell;
+    const glm::vec2 base = glm::floor(slope), f = slope - base;
+    const float dh = glint::total_area(glint::ndf::ggx, glm::vec2(s.alpha));
+    double expected = 0;
+    for (int j = 0; j < 4; ++j) {
+        const glm::vec2 corner = (base + glm::vec2(static_cast<float>(j & 1), static_cast<float>(j >> 1))) * cell;
+        const double w = static_cast<double>(((j & 1) ? f.x : 1 - f.x) * ((j >> 1) ? f.y : 1 - f.y));
+        expected += w * static_cast<double>(cell * cell * glint::slope_area_density(glint::ndf::ggx, corner, glm::vec2(s.alpha)) / dh);
+    }
+    CHECK(static_cast<double>(e.expected) == doctest::Approx(expected).epsilon(1e-5));
+    // An extended light with p = 0 (below the horizon, behind): no draws, R = 0.
+    const auto none = glint::grid_sample(glm::vec2(1.0f), glm::vec2(0.1f, 0), glm::vec2(0, 0.1f), s.params(1u),
+                                         glint::grid_extended_light(0.0f, glm::vec3(0, 0, 1)));
+    CHECK(none.draws == 0);
+    CHECK(none.value == 0.0f);
+}
+
+TEST_CASE("grid: finite and non-negative on hard inputs: zero and huge footprints, grazing and horizon half vectors, roughness 1e-4, extreme densities") {
+    std::size_t bad = 0, total = 0;
+    const glm::vec2 zero(0.0f);
+    for (int v = 0; v <= 4; ++v)
+        for (float logd : {-80.0f, -4.0f, 0.0f, 6.0f, 80.0f})
+            for (float fp : {0.0f, 1e-20f, 1e-3f, 1.0f, 1e6f})
+                for (float hz : {1.0f, 1e-4f, 0.0f, -0.5f})
+                    for (float alpha : {1e-4f, 0.3f})
+                        for (int kind = 0; kind < 2; ++kind) {
+                            glint::grid_params<float> g;
+                            g.log_density = logd;
+                            g.variant = static_cast<glint::binomial_variant>(v);
+                            g.density_sigma = 0.5f;
+                            const glm::vec3 h = glm::normalize(glm::vec3(std::sqrt(std::max(0.0f, 1 - hz * hz)), 0.0f, hz));
+                            const auto light = kind ? glint::grid_extended_light(0.3f, h)
+                                                    : glint::grid_point_light(glint::ndf::ggx, glm::vec2(alpha), 1.0f, h);
+                            for (const glm::vec2& dy : {glm::vec2(0.0f, fp), zero}) {
+                                const auto e = glint::grid_sample(glm::vec2(12.5f, -3.0f), glm::vec2(fp, 0.0f), dy, g, light);
+                                const float m = glint::modulation(e);
+                                ++total;
+                                bad += !(std::isfinite(e.value) && std::isfinite(e.expected) && std::isfinite(m) && e.value >= 0 && m >= 0);
+                            }
+                        }
+    MESSAGE(bad << " non-finite or negative of " << total);
+    CHECK(bad == 0u);
+}

@@ -93,7 +93,9 @@ GLINT_FN real glint_fresnel_conductor(real eta, real k, real cos_theta) {
     real s2 = real(1) - c2;
     real t0 = eta * eta - k * k - s2;
     real a2b2 = sqrt(t0 * t0 + real(4) * eta * eta * k * k);  // a^2 + b^2
-    real a = sqrt(max(real(0.5) * (a2b2 + t0), real(0)));
+    // a^2 = (a2b2 + t0) / 2, rationalised where t0 < 0 (it cancels for small eta and k):
+    // (a2b2 + t0)(a2b2 - t0) = 4 eta^2 k^2.
+    real a = sqrt(max((t0 >= real(0)) ? real(0.5) * (a2b2 + t0) : real(2) * eta * eta * k * k / max(a2b2 - t0, real(1e-30)), real(0)));
     real t1 = a2b2 + c2;
     real t2 = real(2) * a * c;
     real rs = (t1 - t2) / (t1 + t2);

@@ -55,5 +55,6 @@ inline const char* csv_header = "kernel,variant,precision,error_measure,error,ns
 
 section core_section(double min_time);
 section binomial_section(double min_time);
+section grid_section(double min_time);
 
 }  // namespace glint_report

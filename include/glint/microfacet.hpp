@@ -130,7 +130,9 @@ real total_area(ndf d, const vec2_t<real>& alpha) {
 }
 
 // D_Omega for a cone of light directions: unit axis, angular radius radius_angle (radians, in
-// [0, pi/2]). `pieces` sets the quadrature (4 x pieces pieces on the circle).
+// [0, pi/2]). `pieces` (4 to 64) sets the quadrature (2 x pieces pieces on the circle); the
+// default 8 has a worst relative error of 2e-4 over the lights in docs/grid.md (below 1e-6 away
+// from sharp lobes at grazing views), 16 about 1e-5, 32 about 4e-8, at 2x and 4x the time.
 template <class real>
 real integrated_ndf_cone(ndf d, const vec3_t<real>& wo, const vec2_t<real>& alpha, const vec3_t<real>& axis, real radius_angle,
                          int pieces = 8) {
@@ -141,7 +143,8 @@ real integrated_ndf_cone(ndf d, const vec3_t<real>& wo, const vec2_t<real>& alph
 }
 
 // D_Omega for a one-sided rectangular light with corners p0, p0 + e1, p0 + e1 + e2, p0 + e2
-// relative to the shading point (tangent frame), emitting toward cross(e1, e2). `pieces` per edge.
+// relative to the shading point (tangent frame), emitting toward cross(e1, e2). `pieces` per edge
+// (4 to 64, as for cones).
 template <class real>
 real integrated_ndf_rect(ndf d, const vec3_t<real>& wo, const vec2_t<real>& alpha, const vec3_t<real>& p0, const vec3_t<real>& e1,
                          const vec3_t<real>& e2, int pieces = 8) {

@@ -226,25 +226,44 @@ struct glint_light_boundary {
     vec2 range[6];
 };
 
+// One curve of a boundary, copied out of it (small, so that the inner loops pass little).
+struct glint_boundary_curve {
+    int kind;
+    vec3 p;
+    vec3 q;
+    vec3 r;
+    vec2 range;
+};
+
+GLINT_FN glint_boundary_curve glint_boundary_curve_of(glint_light_boundary b, int i) {
+    glint_boundary_curve c;
+    c.kind = b.kind[i];
+    c.p = b.p[i];
+    c.q = b.q[i];
+    c.r = b.r[i];
+    c.range = b.range[i];
+    return c;
+}
+
 struct glint_boundary_point {
     vec3 wi;
     vec3 dwi;  // d wi / d t
 };
 
-GLINT_FN glint_boundary_point glint_boundary_eval(glint_light_boundary b, int i, real t) {
+GLINT_FN glint_boundary_point glint_boundary_eval(glint_boundary_curve b, real t) {
     glint_boundary_point o;
-    if (b.kind[i] == 1) {
-        real dpsi = b.range[i].y - b.range[i].x;
-        real psi = b.range[i].x + t * dpsi;
+    if (b.kind == 1) {
+        real dpsi = b.range.y - b.range.x;
+        real psi = b.range.x + t * dpsi;
         real c = cos(psi), s = sin(psi);
-        o.wi = b.p[i] + c * b.q[i] + s * b.r[i];
-        o.dwi = (c * b.r[i] - s * b.q[i]) * dpsi;
+        o.wi = b.p + c * b.q + s * b.r;
+        o.dwi = (c * b.r - s * b.q) * dpsi;
         return o;
     }
-    vec3 P = b.p[i] + t * b.q[i];
+    vec3 P = b.p + t * b.q;
     real len = max(length(P), real(1e-30));
     o.wi = P / len;
-    o.dwi = (b.q[i] - o.wi * dot(o.wi, b.q[i])) / len;
+    o.dwi = (b.q - o.wi * dot(o.wi, b.q)) / len;
     return o;
 }
 
@@ -270,13 +289,13 @@ GLINT_FN real glint_boundary_integrand(int ndf, vec3 wo, vec2 alpha, glint_bound
     return f * dphi;
 }
 
-GLINT_FN int glint_boundary_pieces(glint_light_boundary b, int i, int pieces) {
-    return (b.kind[i] == 1) ? 4 * pieces : pieces;
+GLINT_FN int glint_boundary_pieces(glint_boundary_curve b, int pieces) {
+    return (b.kind == 1) ? 2 * pieces : pieces;
 }
 
-// The pass-1 samples of curve i: 4 per piece, at t = k / (4 n).
-GLINT_FN vec2 glint_boundary_sample(glint_light_boundary b, int i, real t, vec3 wo, vec2 alpha) {
-    return glint_standardized_slope(glint_boundary_eval(b, i, t).wi + wo, alpha);
+// The pass-1 samples of a curve: 4 per piece, at t = k / (4 n).
+GLINT_FN vec2 glint_boundary_sample(glint_boundary_curve b, real t, vec3 wo, vec2 alpha) {
+    return glint_standardized_slope(glint_boundary_eval(b, t).wi + wo, alpha);
 }
 
 // How much of the integrand's variation a chord from a to b sweeps: the polar angle it subtends,
@@ -286,20 +305,20 @@ GLINT_FN real glint_chord_sweep(vec2 a, vec2 b) {
     return abs(a.x * b.y - a.y * b.x) / max(dot(mid, mid), real(1));
 }
 
-// Gauss-Legendre with 4 nodes on [t0, t1] of curve i: nodes 1/2 -+ 0.339981043584856 / 2 and
+// Gauss-Legendre with 4 nodes on [t0, t1] of a curve: nodes 1/2 -+ 0.339981043584856 / 2 and
 // 1/2 -+ 0.861136311594053 / 2, weights 0.652145154862546 / 2 and 0.347854845137454 / 2
 // (Abramowitz and Stegun, Table 25.4).
-GLINT_FN real glint_boundary_piece(int ndf, vec3 wo, vec2 alpha, glint_light_boundary b, int i, real t0, real t1, bool tail_form) {
+GLINT_FN real glint_boundary_piece(int ndf, vec3 wo, vec2 alpha, glint_boundary_curve b, real t0, real t1, bool tail_form) {
     real h = t1 - t0;
-    real s = real(0.326072577431273) * (glint_boundary_integrand(ndf, wo, alpha, glint_boundary_eval(b, i, t0 + h * real(0.330009478207572)), tail_form) +
-                                        glint_boundary_integrand(ndf, wo, alpha, glint_boundary_eval(b, i, t0 + h * real(0.669990521792428)), tail_form));
-    s += real(0.173927422568727) * (glint_boundary_integrand(ndf, wo, alpha, glint_boundary_eval(b, i, t0 + h * real(0.0694318442029737)), tail_form) +
-                                    glint_boundary_integrand(ndf, wo, alpha, glint_boundary_eval(b, i, t0 + h * real(0.930568155797026)), tail_form));
+    real s = real(0.326072577431273) * (glint_boundary_integrand(ndf, wo, alpha, glint_boundary_eval(b, t0 + h * real(0.330009478207572)), tail_form) +
+                                        glint_boundary_integrand(ndf, wo, alpha, glint_boundary_eval(b, t0 + h * real(0.669990521792428)), tail_form));
+    s += real(0.173927422568727) * (glint_boundary_integrand(ndf, wo, alpha, glint_boundary_eval(b, t0 + h * real(0.0694318442029737)), tail_form) +
+                                    glint_boundary_integrand(ndf, wo, alpha, glint_boundary_eval(b, t0 + h * real(0.930568155797026)), tail_form));
     return s * h;
 }
 
-// D_Omega over the region bounded by b, wo.z > 0. `pieces` (>= 1): pieces per straight edge; an
-// arc gets 4 times as many.
+// D_Omega over the region bounded by b, wo.z > 0. `pieces` (clamped to [4, 64]): pieces per
+// straight edge; an arc gets twice as many. Measured accuracy and cost per value: docs/grid.md.
 //
 // Where the pieces go. Near the point where a curve passes u = 0 at distance d, the integrand
 // varies on a length max(d, 1) in u (like d(phi)/dt), which can be a tiny part of a long curve.
@@ -309,7 +328,7 @@ GLINT_FN real glint_boundary_piece(int ndf, vec3 wo, vec2 alpha, glint_light_bou
 // varies and still cover the rest. Any placement is exact (only the quadrature error changes).
 GLINT_FN real glint_integrated_ndf_boundary(int ndf, vec3 wo, vec2 alpha, glint_light_boundary b, int pieces) {
     alpha = glint_clamp_roughness(alpha);
-    pieces = clamp(pieces, 1, 64);
+    pieces = clamp(pieces, 4, 64);
     if (!(wo.z > real(0)) || b.count < 1) return real(0);
     // Pass 1: the sweep of each curve, the winding number around u = 0, and the clearance
     // min over chords of (distance to u = 0 - chord length / 4), which picks the form.
@@ -317,11 +336,12 @@ GLINT_FN real glint_integrated_ndf_boundary(int ndf, vec3 wo, vec2 alpha, glint_
     real clearance = real(3.0e38);
     real sweep[6];
     for (int i = 0; i < b.count; ++i) {
-        int m = 4 * glint_boundary_pieces(b, i, pieces);
-        vec2 prev = glint_boundary_sample(b, i, real(0), wo, alpha);
+        glint_boundary_curve curve = glint_boundary_curve_of(b, i);
+        int m = 4 * glint_boundary_pieces(curve, pieces);
+        vec2 prev = glint_boundary_sample(curve, real(0), wo, alpha);
         sweep[i] = real(0);
         for (int k = 1; k <= m; ++k) {
-            vec2 next = glint_boundary_sample(b, i, real(k) / real(m), wo, alpha);
+            vec2 next = glint_boundary_sample(curve, real(k) / real(m), wo, alpha);
             vec2 e = next - prev;
             real e2 = dot(e, e);
             real s = (e2 > real(0)) ? clamp(-dot(prev, e) / e2, real(0), real(1)) : real(0);
@@ -335,22 +355,23 @@ GLINT_FN real glint_integrated_ndf_boundary(int ndf, vec3 wo, vec2 alpha, glint_
     // Pass 2.
     real sum = real(0);
     for (int i = 0; i < b.count; ++i) {
-        int n = glint_boundary_pieces(b, i, pieces);
+        glint_boundary_curve curve = glint_boundary_curve_of(b, i);
+        int n = glint_boundary_pieces(curve, pieces);
         int m = 4 * n;
         real dt = real(1) / real(m);
         real mu_prev = real(0);
         real t_start = real(0);
         int done = 0;  // pieces integrated so far
-        vec2 prev = glint_boundary_sample(b, i, real(0), wo, alpha);
+        vec2 prev = glint_boundary_sample(curve, real(0), wo, alpha);
         for (int k = 1; k <= m; ++k) {
-            vec2 next = glint_boundary_sample(b, i, real(k) * dt, wo, alpha);
+            vec2 next = glint_boundary_sample(curve, real(k) * dt, wo, alpha);
             real mu = mu_prev + real(0.5) * dt + ((sweep[i] > real(0)) ? real(0.5) * glint_chord_sweep(prev, next) / sweep[i] : real(0.5) * dt);
             mu = (k == m) ? real(1) : mu;
             for (int j = 0; j < 4 * 64; ++j) {  // the piece ends inside this sample interval
                 real target = real(done + 1) / real(n);
                 if (done >= n || target > mu) break;
                 real t_end = (done + 1 == n) ? real(1) : real(k - 1) * dt + dt * clamp((target - mu_prev) / max(mu - mu_prev, real(1e-30)), real(0), real(1));
-                sum += glint_boundary_piece(ndf, wo, alpha, b, i, t_start, t_end, tail_form);
+                sum += glint_boundary_piece(ndf, wo, alpha, curve, t_start, t_end, tail_form);
                 t_start = t_end;
                 ++done;
             }

@@ -1,0 +1,225 @@
+// The scene of examples/lights.cpp (and of the frame-cost benchmark): a glinty silver sphere on
+// a dark glinty plane, under a point light, the sun, or a rectangular area light, ray cast on the
+// CPU. Each pixel's footprint comes from ray differentials; the glint BRDF is the smooth
+// microfacet BRDF times glint::modulation of the grid estimate (glint/grid.hpp).
+#pragma once
+
+#include <cmath>
+#include <cstdint>
+#include <string>
+
+#include <glint/grid.hpp>
+#include <glint/microfacet.hpp>
+
+namespace glint_examples {
+
+using vec2 = glm::vec2;
+using vec3 = glm::vec3;
+
+enum class light_type { point, sun, area };
+
+inline const char* name(light_type t) { return t == light_type::point ? "point" : t == light_type::sun ? "sun" : "area"; }
+
+struct scene_options {
+    light_type light = light_type::sun;
+    bool smooth = false;
+    std::uint32_t seed = 1;
+    float log_density = 5.0f;  // ln(microfacets per unit uv area); uv = 100 x surface length
+    float roughness = 0.12f;   // GGX alpha of both surfaces
+    glint::binomial_variant variant = glint::binomial_variant::unbiased;
+    float smooth_tolerance = 0.01f;  // glint::grid_params::smooth_tolerance
+    int width = 800, height = 500;
+};
+
+struct hit {
+    bool found = false;
+    bool sphere = false;
+    vec3 p{}, n{}, t{}, b{};  // position and tangent frame (t, b, n)
+    vec2 uv{};
+    float distance = 0;
+};
+
+constexpr float uv_per_unit = 100.0f;  // microfacet-grid uv per unit of surface length
+const vec3 sphere_centre(0.0f, 0.75f, 0.0f);
+constexpr float sphere_radius = 0.75f;
+
+inline hit intersect(const vec3& o, const vec3& d) {
+    hit h;
+    // Sphere.
+    const vec3 oc = o - sphere_centre;
+    const float bq = glm::dot(oc, d), cq = glm::dot(oc, oc) - sphere_radius * sphere_radius, disc = bq * bq - cq;
+    if (disc > 0) {
+        const float t = -bq - std::sqrt(disc);
+        if (t > 1e-4f) {
+            h.found = true, h.sphere = true, h.distance = t;
+            h.p = o + t * d;
+            h.n = glm::normalize(h.p - sphere_centre);
+            const float phi = std::atan2(h.n.z, h.n.x), theta = std::acos(glm::clamp(h.n.y, -1.0f, 1.0f));
+            h.uv = vec2(phi, theta) * (sphere_radius * uv_per_unit);
+            const float s = std::max(std::sqrt(h.n.x * h.n.x + h.n.z * h.n.z), 1e-6f);
+            h.t = vec3(-h.n.z / s, 0.0f, h.n.x / s);  // along increasing phi
+            h.b = glm::cross(h.n, h.t);
+        }
+    }
+    // Plane y = 0.
+    if (d.y < 0) {
+        const float t = -o.y / d.y;
+        if (t > 1e-4f && (!h.found || t < h.distance)) {
+            h.found = true, h.sphere = false, h.distance = t;
+            h.p = o + t * d;
+            h.n = vec3(0, 1, 0), h.t = vec3(1, 0, 0), h.b = vec3(0, 0, -1);
+            h.uv = vec2(h.p.x, -h.p.z) * uv_per_unit;
+        }
+    }
+    return h;
+}
+
+// uv derivative of a world displacement in the tangent plane at h.
+inline vec2 uv_of_displacement(const hit& h, const vec3& disp) {
+    if (!h.sphere) return vec2(disp.x, -disp.z) * uv_per_unit;
+    const float s = std::max(std::sqrt(h.n.x * h.n.x + h.n.z * h.n.z), 1e-3f);
+    // u = phi r, v = theta r: du = (disp . e_phi) / sin(theta), dv = disp . e_theta (e_theta = b).
+    return vec2(glm::dot(disp, h.t) / s, glm::dot(disp, h.b)) * uv_per_unit;
+}
+
+struct camera {
+    vec3 eye{0.0f, 1.25f, 4.2f}, target{0.0f, 0.55f, 0.0f};
+    float fov_y = 0.62f;  // radians
+    int width, height;
+    vec3 forward, right, up;
+    camera(int w, int h) : width(w), height(h) {
+        forward = glm::normalize(target - eye);
+        right = glm::normalize(glm::cross(forward, vec3(0, 1, 0)));
+        up = glm::cross(right, forward);
+    }
+    vec3 ray(float x, float y) const {
+        const float s = 2 * std::tan(0.5f * fov_y) / static_cast<float>(height);
+        return glm::normalize(forward + right * ((x - 0.5f * static_cast<float>(width)) * s) - up * ((y - 0.5f * static_cast<float>(height)) * s));
+    }
+};
+
+// Spectral data (per RGB channel): silver for the sphere; aluminium flakes on the plane.
+const vec3 silver_eta(0.155f, 0.117f, 0.138f), silver_k(4.83f, 3.12f, 2.15f);
+const vec3 flake_eta(1.2f, 0.96f, 0.67f), flake_k(7.2f, 6.4f, 5.3f);
+const vec3 plane_diffuse(0.010f, 0.012f, 0.022f);
+constexpr float flake_coverage = 0.5f;
+
+struct light_setup {
+    light_type type;
+    vec3 position{2.6f, 3.2f, 1.2f};  // point light
+    float intensity = 28.0f;          // point light, radiant intensity per channel
+    vec3 sun_dir = glm::normalize(vec3(-0.35f, 0.22f, -1.0f));
+    float sun_radius = 0.00454f;  // 0.26 degrees
+    float sun_irradiance = 0.8f;
+    vec3 rect_corner{-1.9f, 0.9f, -2.6f}, rect_e1{1.8f, 0.0f, 0.0f}, rect_e2{0.0f, 1.1f, 0.5f};
+    float rect_radiance = 5.0f;
+};
+
+// A dusk sky behind the scene, also mirrored (smoothly, without glints) by the sphere.
+inline vec3 background(const vec3& d) {
+    if (d.y < 0) return vec3(0.004f, 0.004f, 0.005f);  // the plane, seen in the sphere
+    const float t = glm::clamp(d.y * 2.5f, 0.0f, 1.0f);
+    return glm::mix(vec3(0.060f, 0.045f, 0.050f), vec3(0.010f, 0.016f, 0.040f), t);
+}
+
+struct shading_counters {
+    std::uint64_t draws = 0;
+};
+
+inline vec3 to_local(const hit& h, const vec3& w) { return {glm::dot(w, h.t), glm::dot(w, h.b), glm::dot(w, h.n)}; }
+
+// Radiance towards the eye from hit h (wo: unit vector towards the eye, world).
+inline vec3 shade(const scene_options& opt, const light_setup& ls, const hit& h, const vec3& wo_world, const vec2& duvdx, const vec2& duvdy,
+                  shading_counters& counters) {
+    const vec2 alpha(opt.roughness);
+    const float dh = glint::total_area(glint::ndf::ggx, alpha);
+    const vec3 wo = to_local(h, wo_world);
+    if (!(wo.z > 0)) return vec3(0);
+    // The sky mirrored by the sphere (a smooth ambient term, the same with or without glints).
+    vec3 ambient(0);
+    if (h.sphere) {
+        const vec3 r = glm::reflect(-wo_world, h.n);
+        for (int k = 0; k < 3; ++k) ambient[k] = glint::fresnel_conductor(silver_eta[k], silver_k[k], wo.z) * background(r)[k];
+    }
+    vec3 wi_c;           // direction to the light (its centre), local
+    float d_omega = 0;   // extended lights
+    vec3 irradiance(0);  // for the diffuse term, per channel (grey light)
+    float radiance = 0;  // extended lights
+    float point_scale = 0;
+    switch (ls.type) {
+        case light_type::point: {
+            const vec3 d = ls.position - h.p;
+            const float d2 = glm::dot(d, d);
+            wi_c = to_local(h, d / std::sqrt(d2));
+            point_scale = ls.intensity / d2;
+            irradiance = vec3(point_scale * std::max(wi_c.z, 0.0f));
+            break;
+        }
+        case light_type::sun: {
+            wi_c = to_local(h, ls.sun_dir);
+            radiance = ls.sun_irradiance / (2 * 3.14159265f * (1 - std::cos(ls.sun_radius)));
+            irradiance = vec3(ls.sun_irradiance * std::max(wi_c.z, 0.0f));
+            d_omega = glint::integrated_ndf_cone(glint::ndf::ggx, wo, alpha, wi_c, ls.sun_radius);
+            break;
+        }
+        case light_type::area: {
+            const vec3 p0 = to_local(h, ls.rect_corner - h.p), e1 = to_local(h, ls.rect_e1), e2 = to_local(h, ls.rect_e2);
+            const vec3 c = p0 + 0.5f * (e1 + e2);
+            const float len = glm::length(c);
+            wi_c = c / len;
+            radiance = ls.rect_radiance;
+            const float solid = glm::length(glm::cross(e1, e2)) * std::max(0.0f, -glm::dot(glm::normalize(glm::cross(e1, e2)), wi_c)) / (len * len);
+            irradiance = vec3(radiance * solid * std::max(wi_c.z, 0.0f));
+            d_omega = glint::integrated_ndf_rect(glint::ndf::ggx, wo, alpha, p0, e1, e2);
+            break;
+        }
+    }
+    vec3 result = h.sphere ? ambient : plane_diffuse / 3.14159265f * irradiance;
+    if (!(wi_c.z > 0) && ls.type == light_type::point) return result;
+    const vec3 hv = glm::normalize(wi_c + wo);
+    const float g2 = glint::smith_g2(glint::ndf::ggx, wi_c, wo, hv, alpha);
+    if (!(g2 > 0)) return result;
+    float specular = 0;  // the smooth specular without Fresnel
+    if (ls.type == light_type::point)
+        specular = g2 * glint::ndf_value(glint::ndf::ggx, hv, alpha) * point_scale / (4 * wo.z);
+    else
+        specular = g2 * radiance * glm::dot(hv, wi_c) * d_omega / wo.z;
+    if (!(specular > 0)) return result;
+    if (!opt.smooth) {
+        glint::grid_params<float> g;
+        g.log_density = opt.log_density;
+        g.variant = opt.variant;
+        g.smooth_tolerance = opt.smooth_tolerance;
+        g.seed = opt.seed * 0x9E3779B9u + (h.sphere ? 1u : 2u);
+        const auto light = ls.type == light_type::point ? glint::grid_point_light(glint::ndf::ggx, alpha, dh, hv)
+                                                        : glint::grid_extended_light(std::min(1.0f, d_omega / dh), hv);
+        const auto e = glint::grid_sample(h.uv, duvdx, duvdy, g, light);
+        counters.draws += static_cast<std::uint64_t>(e.draws);
+        specular *= glint::modulation(e);
+    }
+    const float c = glm::dot(wi_c, hv);
+    for (int k = 0; k < 3; ++k) {
+        const float f = h.sphere ? glint::fresnel_conductor(silver_eta[k], silver_k[k], c)
+                                 : flake_coverage * glint::fresnel_conductor(flake_eta[k], flake_k[k], c);
+        result[k] += f * specular;
+    }
+    return result;
+}
+
+// The radiance of pixel (x, y).
+inline vec3 render_pixel(const scene_options& opt, const light_setup& ls, const camera& cam, int x, int y, shading_counters& counters) {
+    const float fx = static_cast<float>(x) + 0.5f, fy = static_cast<float>(y) + 0.5f;
+    const vec3 d = cam.ray(fx, fy);
+    const hit h = intersect(cam.eye, d);
+    if (!h.found) return background(d);
+    // Ray differentials: the neighbouring pixels' rays meet the tangent plane at h.
+    auto on_plane = [&](const vec3& dn) {
+        const float t = glm::dot(h.p - cam.eye, h.n) / std::min(glm::dot(dn, h.n), -1e-6f);
+        return cam.eye + t * dn - h.p;
+    };
+    const vec2 duvdx = uv_of_displacement(h, on_plane(cam.ray(fx + 1, fy)));
+    const vec2 duvdy = uv_of_displacement(h, on_plane(cam.ray(fx, fy + 1)));
+    return shade(opt, ls, h, -d, duvdx, duvdy, counters);
+}
+
+}  // namespace glint_examples

@@ -382,10 +382,8 @@ GLINT_FN real glint_integrated_ndf_boundary(int ndf, vec3 wo, vec2 alpha, glint_
     return abs(sum);
 }
 
-// The boundary of a cone of directions (a spherical light seen from the shading point, or the
-// sun): axis c (unit), angular radius with cosine cos_r and sine sin_r; the part below the
-// horizon is cut off along the horizon. count = 0 if nothing is above the horizon.
-GLINT_FN glint_light_boundary glint_cone_boundary(vec3 c, real cos_r, real sin_r) {
+// A boundary with no curves (every member set: GLSL has no default initialisation).
+GLINT_FN glint_light_boundary glint_empty_boundary() {
     glint_light_boundary b;
     b.count = 0;
     for (int i = 0; i < 6; ++i) {
@@ -395,6 +393,14 @@ GLINT_FN glint_light_boundary glint_cone_boundary(vec3 c, real cos_r, real sin_r
         b.r[i] = vec3(real(0));
         b.range[i] = vec2(real(0));
     }
+    return b;
+}
+
+// The boundary of a cone of directions (a spherical light seen from the shading point, or the
+// sun): axis c (unit), angular radius with cosine cos_r and sine sin_r; the part below the
+// horizon is cut off along the horizon. count = 0 if nothing is above the horizon.
+GLINT_FN glint_light_boundary glint_cone_boundary(vec3 c, real cos_r, real sin_r) {
+    glint_light_boundary b = glint_empty_boundary();
     real h = length(vec2(c.x, c.y));  // horizontal extent of the axis (not sqrt(1 - c.z^2): cancels near the zenith)
     if (c.z * cos_r + h * sin_r <= real(0)) return b;
     vec3 t1 = (h > real(1e-7)) ? vec3(-c.y, c.x, real(0)) / h : vec3(real(1), real(0), real(0));
@@ -426,15 +432,7 @@ GLINT_FN glint_light_boundary glint_cone_boundary(vec3 c, real cos_r, real sin_r
 // (relative to the shading point, tangent frame), emitting toward cross(e1, e2); clipped to
 // z >= 0 (Sutherland-Hodgman). count = 0 if the shading point sees its back or nothing of it.
 GLINT_FN glint_light_boundary glint_rect_boundary(vec3 p0, vec3 e1, vec3 e2) {
-    glint_light_boundary b;
-    b.count = 0;
-    for (int i = 0; i < 6; ++i) {
-        b.kind[i] = 0;
-        b.p[i] = vec3(real(0));
-        b.q[i] = vec3(real(0));
-        b.r[i] = vec3(real(0));
-        b.range[i] = vec2(real(0));
-    }
+    glint_light_boundary b = glint_empty_boundary();
     if (!(dot(cross(e1, e2), p0) < real(0))) return b;  // behind the light, or in its plane
     vec3 corner[4];
     corner[0] = p0;

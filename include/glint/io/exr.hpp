@@ -1,17 +1,81 @@
-// OpenEXR output for glint's examples and tools (needs the glint::exr target). Host side: throws
-// glint::error naming the file and the problem.
+// OpenEXR input and output for glint's environment maps, examples and tools (needs the
+// glint::exr target). Host side: throws glint::error naming the file and the problem.
 #pragma once
 
+#include <cmath>
 #include <cstddef>
 #include <string>
 #include <vector>
 
+#include <ImfChannelList.h>
+#include <ImfFrameBuffer.h>
+#include <ImfHeader.h>
+#include <ImfInputFile.h>
 #include <ImfRgbaFile.h>
 
 #include "glint/core/error.hpp"
 
 namespace glint {
 namespace io {
+
+// A linear RGB image, row-major, top row first, 3 floats per pixel.
+struct rgb_image {
+    int width = 0, height = 0;
+    std::vector<float> rgb;
+    // Pixels that had a negative or non-finite channel in the file; those channels read as 0.
+    std::size_t clamped = 0;
+};
+
+// Reads an OpenEXR file with channels R, G and B (A and others are ignored), half or float, any
+// compression; the data window is the image. Negative and non-finite values become 0 and are
+// counted in `clamped` (real captures have a few slightly negative pixels). Throws glint::error
+// if the file cannot be opened or read, lacks one of R, G, B, or is empty.
+inline rgb_image read_exr(const std::string& path) {
+    rgb_image img;
+    try {
+        Imf::InputFile file(path.c_str());
+        const Imf::Header& header = file.header();
+        std::string missing;
+        for (const char* c : {"R", "G", "B"})
+            if (!header.channels().findChannel(c)) missing += std::string(missing.empty() ? "" : ", ") + c;
+        if (!missing.empty()) {
+            std::string present;
+            for (auto it = header.channels().begin(); it != header.channels().end(); ++it)
+                present += std::string(present.empty() ? "" : ", ") + it.name();
+            throw error("glint::io::read_exr: " + path + ": no channel " + missing + " (channels: " + (present.empty() ? "none" : present) +
+                        "); an RGB or RGBA image is needed");
+        }
+        const Imath::Box2i window = header.dataWindow();
+        const long w = static_cast<long>(window.max.x) - window.min.x + 1, h = static_cast<long>(window.max.y) - window.min.y + 1;
+        if (w <= 0 || h <= 0)
+            throw error("glint::io::read_exr: " + path + ": empty image (" + std::to_string(w) + " x " + std::to_string(h) + ")");
+        img.width = static_cast<int>(w), img.height = static_cast<int>(h);
+        img.rgb.assign(3 * static_cast<std::size_t>(w) * static_cast<std::size_t>(h), 0.0f);
+        Imf::FrameBuffer fb;
+        // Slices are addressed through the data window's origin.
+        char* base = reinterpret_cast<char*>(img.rgb.data()) -
+                     (static_cast<std::ptrdiff_t>(window.min.x) + static_cast<std::ptrdiff_t>(window.min.y) * w) * 3 * static_cast<std::ptrdiff_t>(sizeof(float));
+        const char* names[] = {"R", "G", "B"};
+        for (int c = 0; c < 3; ++c)
+            fb.insert(names[c], Imf::Slice(Imf::FLOAT, base + c * static_cast<std::ptrdiff_t>(sizeof(float)), 3 * sizeof(float),
+                                           3 * sizeof(float) * static_cast<std::size_t>(w)));
+        file.setFrameBuffer(fb);
+        file.readPixels(window.min.y, window.max.y);
+    } catch (const error&) {
+        throw;
+    } catch (const std::exception& e) {
+        throw error("glint::io::read_exr: " + path + ": " + e.what());
+    }
+    for (std::size_t i = 0; i < img.rgb.size(); i += 3) {
+        bool bad = false;
+        for (std::size_t c = 0; c < 3; ++c) {
+            float& v = img.rgb[i + c];
+            if (!(std::isfinite(v) && v >= 0)) v = 0, bad = true;
+        }
+        img.clamped += bad;
+    }
+    return img;
+}
 
 // Writes width x height RGB pixels (row-major, top row first, 3 floats each) as a half-float
 // RGBA OpenEXR file (alpha 1).

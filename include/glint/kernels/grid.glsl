@@ -191,6 +191,58 @@ GLINT_FN vec4 glint_slope_weights(vec2 s, real cell, GLINT_OUT(ivec2) base) {
     return vec4((real(1) - f.x) * (real(1) - f.y), f.x * (real(1) - f.y), (real(1) - f.x) * f.y, f.x * f.y);
 }
 
+// The footprint's microfacets on the grid: up to 12 (lattice point, triangle vertex) pairs, each
+// with its triangle weight l_t, its share of the footprint's N microfacets (w_L, times the
+// per-vertex log-normal factor if enabled) and its hashed random numbers. Shared by the
+// single-light estimate below and the multi-level one of ibl.glsl.
+struct glint_grid_vertices {
+    int count;
+    real N;  // density x footprint area
+    real weight[12];
+    real share[12];
+    uvec3 hash[12];
+};
+
+GLINT_FN glint_grid_vertices glint_footprint_vertices(vec2 uv, glint_footprint f, real N, glint_grid_params g) {
+    glint_grid_vertices v;
+    v.count = 0;
+    v.N = N;
+    for (int i = 0; i < 12; ++i) {
+        v.weight[i] = real(0);
+        v.share[i] = real(0);
+        v.hash[i] = uvec3(0u);
+    }
+    glint_lattice lat = glint_footprint_lattice(f, g.lod_scale);
+    for (int l = 0; l < 4; ++l) {
+        real wl = lat.weight[l];
+        if (!(wl > real(0))) continue;
+        real cell = exp2(real(lat.lod[l]));
+        real angle = real(lat.bin[l]) * GLINT_PI / real(2 << lat.level[l]);
+        real ca = cos(angle), sa = sin(angle);
+        vec2 r = vec2(ca * uv.x + sa * uv.y, -sa * uv.x + ca * uv.y);
+        glint_triangle tri = glint_triangle_grid(vec2(r.x / (cell * exp2(real(lat.level[l]))), r.y / cell));
+        uint lattice_key = (uint(lat.lod[l] + 64) | (uint(lat.level[l]) << 8u) | (uint(lat.bin[l]) << 12u)) ^ g.seed;
+        for (int t = 0; t < 3; ++t) {
+            real wt = tri.weight[t];
+            if (!(wt > real(0))) continue;
+            uvec3 hv = glint_pcg3d(uvec3(uint(tri.vertex[t].x), uint(tri.vertex[t].y), lattice_key));
+            real share = wl;
+            if (g.density_sigma > real(0))
+                share *= exp(g.density_sigma * glint_normal_quantile(glint_open_unit_from_bits(hv.z)) - real(0.5) * g.density_sigma * g.density_sigma);
+            v.weight[v.count] = wt;
+            v.share[v.count] = share;
+            v.hash[v.count] = hv;
+            ++v.count;
+        }
+    }
+    return v;
+}
+
+// N = density x footprint area, finite in float.
+GLINT_FN real glint_footprint_count(glint_grid_params g, glint_footprint f) {
+    return min(exp(clamp(g.log_density, real(-80), real(80))) * f.area, real(1e30));
+}
+
 // R for one footprint and one light.
 GLINT_FN glint_grid_estimate glint_grid_sample(vec2 uv, vec2 duvdx, vec2 duvdy, glint_grid_params g, glint_grid_light light) {
     glint_grid_estimate o;
@@ -212,7 +264,7 @@ GLINT_FN glint_grid_estimate glint_grid_sample(vec2 uv, vec2 duvdx, vec2 duvdy, 
     }
     o.expected = dot(mu, p);
     if (!(o.expected > real(0))) return o;  // no microfacet can reflect this light: no sampling
-    real N = min(exp(clamp(g.log_density, real(-80), real(80))) * f.area, real(1e30));  // finite in float
+    real N = glint_footprint_count(g, f);
     // Var(R) <= sum_j m_j^2 p_j (1 - p_j) / N + (exp(sigma^2) - 1) E[R]^2 (the lattice and
     // triangle weights only lower it: their squares sum to at most 1).
     real var_bound = dot(mu * mu, p * (vec4(real(1)) - p)) / max(N, real(1e-30)) +
@@ -222,32 +274,16 @@ GLINT_FN glint_grid_estimate glint_grid_sample(vec2 uv, vec2 duvdx, vec2 duvdy, 
         return o;
     }
     if (!(N > real(1e-30))) return o;  // no footprint, no microfacets
-    glint_lattice lat = glint_footprint_lattice(f, g.lod_scale);
-    for (int l = 0; l < 4; ++l) {
-        real wl = lat.weight[l];
-        if (!(wl > real(0))) continue;
-        real cell = exp2(real(lat.lod[l]));
-        real angle = real(lat.bin[l]) * GLINT_PI / real(2 << lat.level[l]);
-        real ca = cos(angle), sa = sin(angle);
-        vec2 r = vec2(ca * uv.x + sa * uv.y, -sa * uv.x + ca * uv.y);
-        glint_triangle tri = glint_triangle_grid(vec2(r.x / (cell * exp2(real(lat.level[l]))), r.y / cell));
-        uint lattice_key = (uint(lat.lod[l] + 64) | (uint(lat.level[l]) << 8u) | (uint(lat.bin[l]) << 12u)) ^ g.seed;
-        for (int t = 0; t < 3; ++t) {
-            real wt = tri.weight[t];
-            if (!(wt > real(0))) continue;
-            uvec3 hv = glint_pcg3d(uvec3(uint(tri.vertex[t].x), uint(tri.vertex[t].y), lattice_key));
-            real Nv = N * wl;
-            if (g.density_sigma > real(0))
-                Nv *= exp(g.density_sigma * glint_normal_quantile(glint_open_unit_from_bits(hv.z)) - real(0.5) * g.density_sigma * g.density_sigma);
-            for (int j = 0; j < 4; ++j) {
-                if (!(mu[j] > real(0)) || !(p[j] > real(0))) continue;
-                ivec2 c = sbase + ivec2(j & 1, j >> 1);
-                uvec3 hs = glint_pcg3d(uvec3(hv.x ^ uint(c.x), hv.y ^ uint(c.y), hv.z));
-                glint_binomial b = glint_binomial_variant(g.variant, Nv, p[j], glint_open_unit_from_bits(hs.x),
-                                                          glint_open_unit_from_bits(hs.y), g.pow_method);
-                o.value += wt * mu[j] * b.positive / N;  // the draw itself carries w_L
-                ++o.draws;
-            }
+    glint_grid_vertices v = glint_footprint_vertices(uv, f, N, g);
+    for (int i = 0; i < v.count; ++i) {
+        for (int j = 0; j < 4; ++j) {
+            if (!(mu[j] > real(0)) || !(p[j] > real(0))) continue;
+            ivec2 c = sbase + ivec2(j & 1, j >> 1);
+            uvec3 hs = glint_pcg3d(uvec3(v.hash[i].x ^ uint(c.x), v.hash[i].y ^ uint(c.y), v.hash[i].z));
+            glint_binomial b = glint_binomial_variant(g.variant, N * v.share[i], p[j], glint_open_unit_from_bits(hs.x),
+                                                      glint_open_unit_from_bits(hs.y), g.pow_method);
+            o.value += v.weight[i] * mu[j] * b.positive / N;  // the draw itself carries w_L
+            ++o.draws;
         }
     }
     return o;

@@ -84,9 +84,10 @@ struct grid_params {
 };
 
 namespace detail {
-template <class real>
-typename glsl::grid_kernels<real>::glint_grid_params to_kernel(const grid_params<real>& g) {
-    typename glsl::grid_kernels<real>::glint_grid_params k;
+// The kernel struct of the parameters, for a component's kernels class (each has its own type).
+template <class kernels, class real>
+typename kernels::glint_grid_params to_kernel(const grid_params<real>& g) {
+    typename kernels::glint_grid_params k;
     k.log_density = g.log_density;
     k.density_sigma = g.density_sigma;
     k.lod_scale = g.lod_scale;
@@ -135,7 +136,7 @@ grid_light<real> grid_extended_light(real p, const vec3_t<real>& h) {
 template <class real>
 grid_estimate<real> grid_sample(const vec2_t<real>& uv, const vec2_t<real>& duvdx, const vec2_t<real>& duvdy,
                                 const grid_params<real>& g, const grid_light<real>& light) {
-    return detail::glsl::grid_kernels<real>::glint_grid_sample(uv, duvdx, duvdy, detail::to_kernel(g), light);
+    return detail::glsl::grid_kernels<real>::glint_grid_sample(uv, duvdx, duvdy, detail::to_kernel<detail::glsl::grid_kernels<real>>(g), light);
 }
 
 // (A template on the estimate type: real cannot be deduced through the kernel struct.)

@@ -1,0 +1,179 @@
+// glint's image-based lighting of glints (KK25 Sec. 4-5). Needs core.glsl, binomial.glsl,
+// multinomial.glsl, microfacet.glsl and grid.glsl. The host side (levels, fuzzy indicator maps,
+// prefiltering, tables) is in include/glint/ibl.hpp.
+//
+// The environment is split into K radiance levels L_1 = 0 < L_2 < ... < L_K (KK25 Eq. 18), each
+// an area light of constant radiance whose shape is given by a fuzzy indicator map w_k (Eq. 19,
+// summing to 1 per pixel). Prefiltered with the same GGX kernel as the radiance (Eq. 21), the
+// indicator maps give at the reflection direction the share w_k of each level; the probability
+// that one microfacet reflects level k is p_k = E_D w_k / D_H (Eq. 15, 21), E_D the visible
+// reflecting microfacet area. A multinomial draw over the levels at each grid vertex gives the
+// glint result as the smooth result times sum_k L_k M_k / (N sum_k L_k p_k) (Eq. 17), whose mean
+// is the smooth result when the draws are mean-preserving. The black level and the microfacets
+// that reflect nothing (masked, below the horizon) share the multinomial's rest bin.
+
+GLINT_CONST(int) GLINT_IBL_MAX_LEVELS = 8;
+
+// The radiance levels, L[0] = 0 (KK25 Eq. 18); count = K in [3, 8].
+struct glint_ibl_levels {
+    int count;
+    real radiance[8];
+};
+
+// Per level k, the prefiltered fuzzy indicator at the pixel's reflection direction and
+// roughness (sums to 1 over k up to filtering error).
+struct glint_ibl_indicators {
+    real w[8];
+};
+
+// KK25 Eq. 18 with a 0-based index k of K, for luminances clipped to [lo, hi] (0 < lo <= hi):
+// L_0 = 0 and L_k = exp(lerp(log lo, log hi, k / (K - 1))) for k >= 1 (so L_{K-1} = hi).
+GLINT_FN real glint_ibl_level(int k, int K, real lo, real hi) {
+    if (k <= 0) return real(0);
+    return exp(mix(log(lo), log(hi), real(k) / real(K - 1)));
+}
+
+// KK25 Eq. 19: the fuzzy indicator weights of luminance y between the levels: returns (j, t)
+// with w_j = 1 - t and w_{j+1} = t (0-based j). Linear interpolation by default; `log_space`
+// interpolates log y between the levels above the black one (the black level, 0, has no log:
+// linear there). Luminances above the top level are all in the top level.
+GLINT_FN vec2 glint_ibl_fuzzy_weight(real y, glint_ibl_levels lv, bool log_space) {
+    int K = clamp(lv.count, 3, GLINT_IBL_MAX_LEVELS);
+    y = max(y, real(0));
+    if (!(y < lv.radiance[K - 1])) return vec2(real(K - 2), real(1));
+    int j = 0;
+    for (int k = 1; k < 8; ++k)
+        if (k < K - 1 && y >= lv.radiance[k]) j = k;
+    real a = lv.radiance[j], b = lv.radiance[j + 1];
+    real t = (y - a) / max(b - a, real(1e-30));
+    if (log_space && j > 0) t = log(y / a) / log(b / a);
+    return vec2(real(j), clamp(t, real(0), real(1)));
+}
+
+struct glint_ibl_estimate {
+    real value;     // sum_k L_k M_k / N
+    real expected;  // sum_k L_k p_k
+    int draws;      // binomial draws made
+};
+
+// The per-level reflection probabilities p_k = E_D w_k / D_H (KK25 Eq. 15, 21), scaled down if they
+// sum to more than 1.
+GLINT_FN glint_multinomial_probabilities glint_ibl_probabilities(glint_ibl_levels lv, glint_ibl_indicators ind, real e_d, real d_h) {
+    glint_multinomial_probabilities pr;
+    int K = clamp(lv.count, 3, GLINT_IBL_MAX_LEVELS);
+    real total = real(0);
+    for (int k = 0; k < 8; ++k) {
+        pr.p[k] = (k < K) ? clamp(e_d * ind.w[k] / max(d_h, real(1)), real(0), real(1)) : real(0);
+        total += pr.p[k];
+    }
+    real scale = (total > real(1)) ? real(1) / total : real(1);
+    for (int k = 0; k < 8; ++k) pr.p[k] *= scale;
+    return pr;
+}
+
+// Per level, sum over the footprint's grid vertices of l_t M_k / N: the reflecting microfacets
+// of each level as a fraction of the footprint's N, E[share_k] = p_k. The multinomial runs over
+// the levels above the black one (K - 1 bins, K >= 3); the black level joins the rest bin (both
+// reflect no light), so share_0 = 0.
+struct glint_ibl_shares {
+    real share[8];
+    int draws;
+};
+
+GLINT_FN glint_ibl_shares glint_ibl_level_shares(vec2 uv, glint_footprint f, real N, glint_grid_params g, int K,
+                                                 glint_multinomial_probabilities lit) {
+    glint_ibl_shares o;
+    for (int k = 0; k < 8; ++k) o.share[k] = real(0);
+    o.draws = 0;
+    if (!(N > real(1e-30))) return o;
+    glint_grid_vertices v = glint_footprint_vertices(uv, f, N, g);
+    for (int i = 0; i < v.count; ++i) {
+        glint_multinomial_counts c = glint_multinomial(N * v.share[i], lit, K - 1, v.hash[i], g.variant, g.pow_method);
+        for (int k = 0; k < 7; ++k) o.share[k + 1] += v.weight[i] * c.count[k] / N;
+        o.draws += K - 1;
+    }
+    return o;
+}
+
+// The levels above the black one as multinomial bins 0..K-2.
+GLINT_FN glint_multinomial_probabilities glint_ibl_lit_levels(glint_multinomial_probabilities all, int K) {
+    glint_multinomial_probabilities lit;
+    for (int k = 0; k < 8; ++k) lit.p[k] = (k + 1 < K && k + 1 < 8) ? all.p[min(k + 1, 7)] : real(0);
+    return lit;
+}
+
+// The glint estimate for one footprint under the environment (KK25 Eq. 17): modulation =
+// value / expected. Same grid as glint_grid_sample, without the half-vector interpolation
+// (KK25 Sec. 3.3: IBL has no single half vector).
+GLINT_FN glint_ibl_estimate glint_ibl_sample(vec2 uv, vec2 duvdx, vec2 duvdy, glint_grid_params g, glint_ibl_levels lv,
+                                             glint_ibl_indicators ind, real e_d, real d_h) {
+    glint_ibl_estimate o;
+    o.value = real(0);
+    o.expected = real(0);
+    o.draws = 0;
+    int K = clamp(lv.count, 3, GLINT_IBL_MAX_LEVELS);
+    glint_multinomial_probabilities all = glint_ibl_probabilities(lv, ind, e_d, d_h);
+    real second = real(0);  // sum_k L_k^2 p_k, for the variance bound
+    for (int k = 1; k < 8; ++k) {
+        real L = (k < K) ? lv.radiance[k] : real(0);
+        o.expected += L * all.p[k];
+        second += L * L * all.p[k];
+    }
+    if (!(o.expected > real(0))) return o;  // nothing bright can be reflected: no sampling
+    glint_footprint f = glint_footprint_from_derivatives(duvdx, duvdy);
+    real N = glint_footprint_count(g, f);
+    // Var(sum_k L_k M_k / N) <= sum_k L_k^2 p_k / N (each multinomial count's variance is at most
+    // its mean; the covariances are negative), plus the log-normal density's share.
+    real var_bound = second / max(N, real(1e-30)) + (exp(g.density_sigma * g.density_sigma) - real(1)) * o.expected * o.expected;
+    if (var_bound <= g.smooth_tolerance * g.smooth_tolerance * o.expected * o.expected) {
+        o.value = o.expected;
+        return o;
+    }
+    glint_ibl_shares sh = glint_ibl_level_shares(uv, f, N, g, K, glint_ibl_lit_levels(all, K));
+    for (int k = 1; k < 8; ++k) o.value += (k < K) ? lv.radiance[k] * sh.share[k] : real(0);
+    o.draws = sh.draws;
+    return o;
+}
+
+GLINT_FN real glint_ibl_modulation(glint_ibl_estimate e) {
+    return (e.expected > real(0)) ? e.value / e.expected : real(0);
+}
+
+// ---------------------------------------------------------------------------------------------
+// Texture filtering as OpenGL does it (GL_LINEAR): texel centres at (i + 1/2) / size; u repeats
+// (GL_REPEAT, the equirectangular seam), v clamps to the edge (GL_CLAMP_TO_EDGE, the poles).
+struct glint_bilinear_taps {
+    ivec2 texel[4];  // (x, y) of the taps: (x0, y0), (x1, y0), (x0, y1), (x1, y1)
+    vec4 weight;
+};
+
+GLINT_FN glint_bilinear_taps glint_bilinear(vec2 uv, int width, int height) {
+    real x = uv.x * real(width) - real(0.5);
+    real y = uv.y * real(height) - real(0.5);
+    real fx0 = floor(x), fy0 = floor(y);
+    real ax = x - fx0, ay = y - fy0;
+    int x0 = int(fx0), y0 = int(fy0);
+    // Repeat in x (also for |u| large: fold into [0, width)); clamp in y.
+    x0 = x0 - width * int(floor(real(x0) / real(width)));
+    int x1 = (x0 + 1 == width) ? 0 : x0 + 1;
+    int ya = clamp(y0, 0, height - 1), yb = clamp(y0 + 1, 0, height - 1);
+    glint_bilinear_taps t;
+    t.texel[0] = ivec2(x0, ya);
+    t.texel[1] = ivec2(x1, ya);
+    t.texel[2] = ivec2(x0, yb);
+    t.texel[3] = ivec2(x1, yb);
+    t.weight = vec4((real(1) - ax) * (real(1) - ay), ax * (real(1) - ay), (real(1) - ax) * ay, ax * ay);
+    return t;
+}
+
+// The equirectangular coordinates of a direction (y up; u = 1/2 looks along -z; v = 0 at the
+// zenith), and back.
+GLINT_FN vec2 glint_equirect_uv(vec3 d) {
+    return vec2(atan(d.x, -d.z) * GLINT_INV_TWO_PI + real(0.5), acos(clamp(d.y, real(-1), real(1))) / GLINT_PI);
+}
+
+GLINT_FN vec3 glint_equirect_direction(vec2 uv) {
+    real phi = (uv.x - real(0.5)) * real(2) * GLINT_PI;
+    real theta = uv.y * GLINT_PI;
+    return vec3(sin(theta) * sin(phi), cos(theta), -sin(theta) * cos(phi));
+}

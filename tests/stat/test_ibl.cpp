@@ -253,7 +253,7 @@ TEST_CASE("ibl: a brute-force footprint of N discrete microfacets agrees in mean
                 g.log_density = std::log(static_cast<float>(facets) / 100.0f);  // 10 x 10 uv footprint
                 g.smooth_tolerance = 0;
                 gt::running_moments model;
-                for (std::uint32_t i = 0; i < 20000; ++i) {
+                for (std::uint32_t i = 0; i < 80000; ++i) {
                     g.seed = i * 2654435761u + 99u;
                     const auto e = glint::ibl_sample(glm::vec2(static_cast<float>(i) * 37.1f, 3.0f), glm::vec2(10.0f, 0.0f), glm::vec2(0.0f, 10.0f), g,
                                                      env.levels(), s.indicators, env.visible_area(wo.y, sa), env.total_area(alpha));
@@ -261,7 +261,7 @@ TEST_CASE("ibl: a brute-force footprint of N discrete microfacets agrees in mean
                 }
                 // The glint result's mean is its smooth result (the unbiasedness, exactly)...
                 const auto t = gt::mean_test(model, smooth, alpha_each);
-                CHECK(t.resolves(0.1 * smooth));
+                CHECK(t.resolves(0.2 * smooth));
                 CHECK_FALSE(t.rejects(alpha_each));
                 MESSAGE(std::string(name) << ", N = " << facets << ", K = " << levels << ": mean " << model.mean << " (brute force " << brute.mean
                               << ", ratio " << model.mean / brute.mean << "), sd " << std::sqrt(model.variance()) << " (brute force "

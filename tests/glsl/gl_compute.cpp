@@ -40,6 +40,12 @@ struct gl_compute::impl {
     PFNGLDISPATCHCOMPUTEPROC DispatchCompute = nullptr;
     PFNGLMEMORYBARRIERPROC MemoryBarrier = nullptr;
     PFNGLFINISHPROC Finish = nullptr;
+    PFNGLGENTEXTURESPROC GenTextures = nullptr;
+    PFNGLDELETETEXTURESPROC DeleteTextures = nullptr;
+    PFNGLBINDTEXTUREPROC BindTexture = nullptr;
+    PFNGLACTIVETEXTUREPROC ActiveTexture = nullptr;
+    PFNGLTEXIMAGE2DPROC TexImage2D = nullptr;
+    PFNGLTEXPARAMETERIPROC TexParameteri = nullptr;
     std::vector<unsigned> programs;
 
     template <class F>
@@ -90,6 +96,34 @@ gl_compute::gl_compute() : impl_(new impl) {
     g.load(g.DispatchCompute, "glDispatchCompute");
     g.load(g.MemoryBarrier, "glMemoryBarrier");
     g.load(g.Finish, "glFinish");
+    g.load(g.GenTextures, "glGenTextures");
+    g.load(g.DeleteTextures, "glDeleteTextures");
+    g.load(g.BindTexture, "glBindTexture");
+    g.load(g.ActiveTexture, "glActiveTexture");
+    g.load(g.TexImage2D, "glTexImage2D");
+    g.load(g.TexParameteri, "glTexParameteri");
+}
+
+unsigned gl_compute::texture_rgba32f(int width, int height, const std::vector<float>& rgba) {
+    impl& g = *impl_;
+    if (rgba.size() != 4 * static_cast<std::size_t>(width) * static_cast<std::size_t>(height))
+        throw std::runtime_error("gl_compute: texture data size does not match " + std::to_string(width) + " x " + std::to_string(height));
+    GLuint tex = 0;
+    g.GenTextures(1, &tex);
+    g.ActiveTexture(GL_TEXTURE0);
+    g.BindTexture(GL_TEXTURE_2D, tex);
+    g.TexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, width, height, 0, GL_RGBA, GL_FLOAT, rgba.data());
+    g.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    g.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    g.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_REPEAT);
+    g.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    if (g.GetError() != GL_NO_ERROR) throw std::runtime_error("gl_compute: creating the texture failed");
+    return tex;
+}
+
+void gl_compute::delete_texture(unsigned texture) {
+    GLuint t = texture;
+    impl_->DeleteTextures(1, &t);
 }
 
 gl_compute::~gl_compute() {

@@ -33,6 +33,12 @@ public:
                                    const std::vector<std::vector<std::uint32_t>>& inputs,
                                    std::size_t output_words, std::size_t invocations);
 
+    // An RGBA32F 2D texture on unit 0 with GL_LINEAR filtering, GL_REPEAT in s and
+    // GL_CLAMP_TO_EDGE in t (an equirectangular environment map); rows bottom to top as GL
+    // addresses them (row y at t = (y + 1/2) / height). Returns its name.
+    unsigned texture_rgba32f(int width, int height, const std::vector<float>& rgba);
+    void delete_texture(unsigned texture);
+
     struct impl;
 
 private:

@@ -56,5 +56,6 @@ inline const char* csv_header = "kernel,variant,precision,error_measure,error,ns
 section core_section(double min_time);
 section binomial_section(double min_time);
 section grid_section(double min_time);
+section ibl_section(double min_time);  // when built with GLINT_REPORT_IBL
 
 }  // namespace glint_report

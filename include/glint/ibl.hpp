@@ -19,9 +19,10 @@
 //   n = wo = r (KK25 Eq. 11, 21; Karis 2013): GGX normal samples (Hammersley) with the source read
 //   at the level of detail of each sample's solid angle (Colbert and Krivanek 2007), from a box
 //   pyramid of the map;
-// - two tables over (cos theta_o, sqrt alpha): the directional albedo E_rho (F = 1, Smith G2) by
-//   1024 visible-normal samples, and the visible reflecting microfacet area E_D = D_Omega of the
-//   whole upper hemisphere, computed exactly (glint::integrated_ndf_cone, 32 pieces).
+// - two tables over (sqrt(cos theta_o), sqrt alpha), 64 x 64 by default, the same for every map
+//   (computed once per process): the directional albedo E_rho (F = 1, Smith G2) by 1024
+//   visible-normal samples, and the visible reflecting microfacet area E_D = D_Omega of the whole
+//   upper hemisphere, computed exactly (glint::integrated_ndf_cone, 32 pieces).
 // Lookups filter as OpenGL's GL_LINEAR (bilinear) and trilinear between roughness levels, so a
 // GLSL renderer that uploads the same arrays as textures gets the same values.
 #pragma once
@@ -30,7 +31,10 @@
 #include <cmath>
 #include <cstdint>
 #include <functional>
+#include <map>
+#include <mutex>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "glint/core/error.hpp"
@@ -88,7 +92,7 @@ struct ibl_options {
     bool log_weights = false;   // Eq. 19 in log space (KK25 found linear to show fewer artifacts)
     int roughness_levels = 6;   // M: sqrt(alpha) = 0, 1/(M-1), ..., 1
     int samples = 64;           // GGX samples per prefiltered texel
-    int table_size = 32;        // E_rho and E_D tables, table_size^2 entries
+    int table_size = 64;        // E_rho and E_D tables, table_size^2 entries
     // Called with the fraction done (0..1) during the prefiltering.
     std::function<void(double)> progress;
 };
@@ -129,9 +133,10 @@ public:
         return s;
     }
 
-    // E_rho(cos theta_o, sqrt alpha) and E_D(cos theta_o, sqrt alpha), bilinear (GL_CLAMP_TO_EDGE).
-    float albedo(float cos_o, float sqrt_alpha) const { return table(e_rho_, cos_o, sqrt_alpha); }
-    float visible_area(float cos_o, float sqrt_alpha) const { return table(e_d_, cos_o, sqrt_alpha); }
+    // E_rho(cos theta_o, sqrt alpha) and E_D(cos theta_o, sqrt alpha), bilinear (GL_CLAMP_TO_EDGE)
+    // in (sqrt(cos theta_o), sqrt alpha): the square root resolves the steep grazing end.
+    float albedo(float cos_o, float sqrt_alpha) const { return table(e_rho_, std::sqrt(std::max(cos_o, 0.0f)), sqrt_alpha); }
+    float visible_area(float cos_o, float sqrt_alpha) const { return table(e_d_, std::sqrt(std::max(cos_o, 0.0f)), sqrt_alpha); }
     // D_H of GGX at roughness alpha.
     float total_area(float alpha) const { return glint::total_area(ndf::ggx, glm::vec2(alpha)); }
     int table_size() const { return table_size_; }
@@ -192,6 +197,35 @@ inline void frame_of(const glm::vec3& n, glm::vec3& t, glm::vec3& b) {
     const glm::vec3 a = std::fabs(n.y) < 0.999f ? glm::vec3(0, 1, 0) : glm::vec3(1, 0, 0);
     t = glm::normalize(glm::cross(a, n));
     b = glm::cross(n, t);
+}
+
+// E_rho and E_D over (sqrt(cos theta_o), sqrt alpha) at texel centres (i + 1/2) / T, computed once
+// per table size.
+inline const std::pair<std::vector<float>, std::vector<float>>& ibl_tables(int T) {
+    static std::map<int, std::pair<std::vector<float>, std::vector<float>>> cache;
+    static std::mutex lock;
+    std::lock_guard<std::mutex> guard(lock);
+    auto it = cache.find(T);
+    if (it != cache.end()) return it->second;
+    std::vector<float> e_rho(static_cast<std::size_t>(T * T)), e_d(static_cast<std::size_t>(T * T));
+    for (int j = 0; j < T; ++j)
+        for (int i = 0; i < T; ++i) {
+            const double q = (i + 0.5) / T, c = q * q, sa = (j + 0.5) / T, alpha = std::max(sa * sa, 1e-4);
+            const glm::dvec3 wo(std::sqrt(std::max(0.0, 1 - c * c)), 0, c);
+            double e = 0;
+            const int S = 1024;
+            for (int s = 0; s < S; ++s) {
+                const glm::vec2 u = hammersley(static_cast<std::uint32_t>(s), S);
+                const glm::dvec3 h = sample_vndf_ggx(wo, glm::dvec2(alpha), static_cast<double>(u.x), static_cast<double>(u.y));
+                const glm::dvec3 wi = 2 * glm::dot(wo, h) * h - wo;
+                const double g1 = smith_g1(ndf::ggx, wo, h, glm::dvec2(alpha));
+                if (wi.z > 0 && g1 > 0) e += smith_g2(ndf::ggx, wi, wo, h, glm::dvec2(alpha)) / g1;
+            }
+            e_rho[static_cast<std::size_t>(j * T + i)] = static_cast<float>(e / S);
+            e_d[static_cast<std::size_t>(j * T + i)] =
+                static_cast<float>(integrated_ndf_cone(ndf::ggx, wo, glm::dvec2(alpha), glm::dvec3(0, 0, 1), 0.5 * 3.14159265358979323846, 32));
+        }
+    return cache.emplace(T, std::make_pair(std::move(e_rho), std::move(e_d))).first->second;
 }
 
 }  // namespace detail
@@ -316,28 +350,11 @@ inline environment build_environment(int width, int height, const std::vector<fl
             if (o.progress) o.progress(work_done / work_total);
         }
     }
-    // Tables.
-    const int T = o.table_size;
-    env.table_size_ = T;
-    env.e_rho_.assign(static_cast<std::size_t>(T * T), 0.0f);
-    env.e_d_.assign(static_cast<std::size_t>(T * T), 0.0f);
-    for (int j = 0; j < T; ++j)
-        for (int i = 0; i < T; ++i) {
-            const double c = (i + 0.5) / T, sa = (j + 0.5) / T, alpha = std::max(sa * sa, 1e-4);
-            const glm::dvec3 wo(std::sqrt(std::max(0.0, 1 - c * c)), 0, c);
-            double e = 0;
-            const int S = 1024;
-            for (int s = 0; s < S; ++s) {
-                const glm::vec2 u = detail::hammersley(static_cast<std::uint32_t>(s), S);
-                const glm::dvec3 h = sample_vndf_ggx(wo, glm::dvec2(alpha), static_cast<double>(u.x), static_cast<double>(u.y));
-                const glm::dvec3 wi = 2 * glm::dot(wo, h) * h - wo;
-                const double g1 = smith_g1(ndf::ggx, wo, h, glm::dvec2(alpha));
-                if (wi.z > 0 && g1 > 0) e += smith_g2(ndf::ggx, wi, wo, h, glm::dvec2(alpha)) / g1;
-            }
-            env.e_rho_[static_cast<std::size_t>(j * T + i)] = static_cast<float>(e / S);
-            env.e_d_[static_cast<std::size_t>(j * T + i)] =
-                static_cast<float>(integrated_ndf_cone(ndf::ggx, wo, glm::dvec2(alpha), glm::dvec3(0, 0, 1), 0.5 * 3.14159265358979323846, 32));
-        }
+    // Tables (shared by every environment with this table size).
+    const auto& tables = detail::ibl_tables(o.table_size);
+    env.table_size_ = o.table_size;
+    env.e_rho_ = tables.first;
+    env.e_d_ = tables.second;
     return env;
 }
 

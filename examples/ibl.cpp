@@ -19,6 +19,7 @@
 #include <glint/io/exr.hpp>
 
 #include "lights_scene.hpp"
+#include "support/cli.hpp"
 #include "support/png.hpp"
 
 using namespace glint_examples;
@@ -35,19 +36,11 @@ namespace {
 }
 
 float parse_float(const std::string& flag, const std::string& s, float lo, float hi) {
-    char* end = nullptr;
-    const float v = std::strtof(s.c_str(), &end);
-    if (end == s.c_str() || *end != '\0' || !std::isfinite(v) || v < lo || v > hi)
-        usage(flag + " needs a number in [" + std::to_string(lo) + ", " + std::to_string(hi) + "], got '" + s + "'");
-    return v;
+    const auto v = parse_number(s, lo, hi);
+    if (!v) usage(range_message(flag, s, lo, hi));
+    return *v;
 }
 
-std::uint8_t to_srgb8(float v) {
-    v = std::max(v, 0.0f) * 1.2f;
-    v = v / (1 + v);
-    const float s = v <= 0.0031308f ? 12.92f * v : 1.055f * std::pow(v, 1 / 2.4f) - 0.055f;
-    return static_cast<std::uint8_t>(std::lround(std::clamp(s, 0.0f, 1.0f) * 255));
-}
 
 }  // namespace
 
@@ -160,7 +153,7 @@ int main(int argc, char** argv) {
     try {
         glint::io::write_exr(out, w, h, rgb);
         std::vector<std::uint8_t> preview(rgb.size());
-        for (std::size_t i = 0; i < rgb.size(); ++i) preview[i] = to_srgb8(rgb[i]);
+        for (std::size_t i = 0; i < rgb.size(); ++i) preview[i] = to_srgb8(rgb[i], 1.2f);
         const std::string png = out.substr(0, out.size() - 4) + ".png";
         write_png(png, w, h, preview);
         std::printf("wrote %s and %s\n", out.c_str(), png.c_str());

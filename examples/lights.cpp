@@ -19,6 +19,7 @@
 #include <glint/io/exr.hpp>
 
 #include "lights_scene.hpp"
+#include "support/cli.hpp"
 #include "support/png.hpp"
 
 using namespace glint_examples;
@@ -35,11 +36,9 @@ namespace {
 }
 
 float parse_float(const std::string& flag, const std::string& s, float lo, float hi) {
-    char* end = nullptr;
-    const float v = std::strtof(s.c_str(), &end);
-    if (end == s.c_str() || *end != '\0' || !std::isfinite(v) || v < lo || v > hi)
-        usage(flag + " needs a number in [" + std::to_string(lo) + ", " + std::to_string(hi) + "], got '" + s + "'");
-    return v;
+    const auto v = parse_number(s, lo, hi);
+    if (!v) usage(range_message(flag, s, lo, hi));
+    return *v;
 }
 
 struct settings {
@@ -94,13 +93,6 @@ settings parse(int argc, char** argv) {
     return s;
 }
 
-// Filmic-ish tone curve x / (1 + x) on exposure-scaled radiance, then the sRGB transfer.
-std::uint8_t to_srgb8(float v) {
-    v = std::max(v, 0.0f) * 1.6f;
-    v = v / (1 + v);
-    const float s = v <= 0.0031308f ? 12.92f * v : 1.055f * std::pow(v, 1 / 2.4f) - 0.055f;
-    return static_cast<std::uint8_t>(std::lround(std::clamp(s, 0.0f, 1.0f) * 255));
-}
 
 }  // namespace
 
@@ -143,7 +135,7 @@ int main(int argc, char** argv) {
     try {
         glint::io::write_exr(s.out, w, h, rgb);
         std::vector<std::uint8_t> preview(rgb.size());
-        for (std::size_t i = 0; i < rgb.size(); ++i) preview[i] = to_srgb8(rgb[i]);
+        for (std::size_t i = 0; i < rgb.size(); ++i) preview[i] = to_srgb8(rgb[i], 1.6f);
         const std::string png = s.out.substr(0, s.out.size() - 4) + ".png";
         write_png(png, w, h, preview);
         std::printf("wrote %s and %s\n", s.out.c_str(), png.c_str());

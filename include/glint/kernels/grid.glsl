@@ -238,6 +238,16 @@ GLINT_FN glint_grid_vertices glint_footprint_vertices(vec2 uv, glint_footprint f
     return v;
 }
 
+// True where a draw of the mean-preserving sampler (with its log1p evaluation of (1 - p)^N) from
+// first uniform u1 has no positive outcome for certain, so the draw can be skipped with the same
+// result: its gates give n >= 1 with probability P(n >= 1) <= max(N, 2) p, computed to within
+// 5e-6 absolute (docs/pow_one_minus.csv), and n >= 1 exactly when u1 falls below it. Sparse glints
+// skip most draws this way.
+GLINT_FN bool glint_surely_no_success(glint_grid_params g, real N, real p, real u1) {
+    return g.variant == GLINT_BINOMIAL_UNBIASED && g.pow_method == GLINT_POW_LOG1P &&
+           u1 >= max(N, real(2)) * p * real(1.0001) + real(1e-5);
+}
+
 // N = density x footprint area, finite in float.
 GLINT_FN real glint_footprint_count(glint_grid_params g, glint_footprint f) {
     return min(exp(clamp(g.log_density, real(-80), real(80))) * f.area, real(1e30));
@@ -280,8 +290,9 @@ GLINT_FN glint_grid_estimate glint_grid_sample(vec2 uv, vec2 duvdx, vec2 duvdy, 
             if (!(mu[j] > real(0)) || !(p[j] > real(0))) continue;
             ivec2 c = sbase + ivec2(j & 1, j >> 1);
             uvec3 hs = glint_pcg3d(uvec3(v.hash[i].x ^ uint(c.x), v.hash[i].y ^ uint(c.y), v.hash[i].z));
-            glint_binomial b = glint_binomial_variant(g.variant, N * v.share[i], p[j], glint_open_unit_from_bits(hs.x),
-                                                      glint_open_unit_from_bits(hs.y), g.pow_method);
+            real u1 = glint_open_unit_from_bits(hs.x);
+            if (glint_surely_no_success(g, N * v.share[i], p[j], u1)) continue;
+            glint_binomial b = glint_binomial_variant(g.variant, N * v.share[i], p[j], u1, glint_open_unit_from_bits(hs.y), g.pow_method);
             o.value += v.weight[i] * mu[j] * b.positive / N;  // the draw itself carries w_L
             ++o.draws;
         }

@@ -87,7 +87,12 @@ GLINT_FN glint_ibl_shares glint_ibl_level_shares(vec2 uv, glint_footprint f, rea
     o.draws = 0;
     if (!(N > real(1e-30))) return o;
     glint_grid_vertices v = glint_footprint_vertices(uv, f, N, g);
+    real lit_total = real(0);
+    for (int k = 0; k < 8; ++k) lit_total += lit.p[k];
     for (int i = 0; i < v.count; ++i) {
+        // The multinomial's root draws the lit levels against the rest with these uniforms: if it
+        // surely draws none, every count is 0 (glint_surely_no_success).
+        if (glint_surely_no_success(g, N * v.share[i], min(lit_total, real(1)), glint_multinomial_uniforms(v.hash[i], 0).x)) continue;
         glint_multinomial_counts c = glint_multinomial(N * v.share[i], lit, K - 1, v.hash[i], g.variant, g.pow_method);
         for (int k = 0; k < 7; ++k) o.share[k + 1] += v.weight[i] * c.count[k] / N;
         o.draws += K - 1;

@@ -21,50 +21,6 @@ namespace glint_report {
 
 namespace {
 
-struct light_case {
-    bool cone;
-    glint::ndf d;
-    glm::dvec2 alpha;
-    glm::dvec3 wo, axis, p0, e1, e2;
-    double radius;
-};
-
-// A subset of the unit test's lights: both NDFs, sharp to rough, normal to grazing views, the
-// sun, 3- and 23-degree cones, small to large rectangles, at and near the mirror direction.
-std::vector<light_case> light_cases() {
-    std::vector<light_case> out;
-    for (glint::ndf d : {glint::ndf::ggx, glint::ndf::beckmann})
-        for (glm::dvec2 a : {glm::dvec2(2e-3), glm::dvec2(0.02, 0.08), glm::dvec2(0.2), glm::dvec2(0.5, 0.25)})
-            for (double theta_o : {0.0, 0.8, 1.4}) {
-                const glm::dvec3 wo(std::sin(theta_o), 0, std::cos(theta_o)), r(-wo.x, -wo.y, wo.z);
-                const glm::dvec3 side = glm::normalize(glm::cross(r, glm::dvec3(0.3, 1, 0.2)));
-                for (double radius : {0.00454, 0.05, 0.4})
-                    for (double off : {0.0, 0.5, 1.5}) {
-                        const glm::dvec3 c = std::cos(off * radius) * r + std::sin(off * radius) * side;
-                        out.push_back({true, d, a, wo, c, {}, {}, {}, radius});
-                    }
-                for (double size : {0.05, 0.5, 3.0})
-                    for (double off : {0.0, 0.5, 1.5}) {
-                        const glm::dvec3 c = std::cos(off * size / 2) * r + std::sin(off * size / 2) * side;
-                        glm::dvec3 e1 = glm::normalize(glm::cross(c, glm::dvec3(0, 0.2, 1))) * size;
-                        glm::dvec3 e2 = glm::normalize(glm::cross(e1, c)) * size * 0.6;
-                        if (glm::dot(glm::cross(e1, e2), c) > 0) std::swap(e1, e2);
-                        out.push_back({false, d, a, wo, {}, c * 2.0 - 0.5 * e1 - 0.5 * e2, e1, e2, 0});
-                    }
-            }
-    return out;
-}
-
-float d_omega_float(const light_case& c, int pieces) {
-    return c.cone ? glint::integrated_ndf_cone<float>(c.d, glm::vec3(c.wo), glm::vec2(c.alpha), glm::vec3(c.axis), static_cast<float>(c.radius), pieces)
-                  : glint::integrated_ndf_rect<float>(c.d, glm::vec3(c.wo), glm::vec2(c.alpha), glm::vec3(c.p0), glm::vec3(c.e1), glm::vec3(c.e2), pieces);
-}
-
-double d_omega_double(const light_case& c, int pieces) {
-    return c.cone ? glint::integrated_ndf_cone(c.d, c.wo, c.alpha, c.axis, c.radius, pieces)
-                  : glint::integrated_ndf_rect(c.d, c.wo, c.alpha, c.p0, c.e1, c.e2, pieces);
-}
-
 // Mean of R / E[R] over seeds for a few scenes; returns the largest |mean - 1| and its standard
 // error.
 struct bias_result {
@@ -72,7 +28,7 @@ struct bias_result {
     std::string where;
 };
 
-bias_result grid_bias(glint::binomial_variant v, float slope_cell) {
+bias_result grid_bias(glint::binomial_variant v) {
     bias_result out;
     for (glint_test::light_kind k : {glint_test::light_kind::point, glint_test::light_kind::sphere, glint_test::light_kind::rect})
         for (float logd : {0.0f, 2.0f, 4.0f}) {
@@ -84,8 +40,7 @@ bias_result grid_bias(glint::binomial_variant v, float slope_cell) {
             double sum = 0, sq = 0;
             const int n = 6000;
             for (int i = 0; i < n; ++i) {
-                auto g = s.params(static_cast<std::uint32_t>(i) * 2654435761u + 17u);
-                g.slope_cell = slope_cell;
+                const auto g = s.params(static_cast<std::uint32_t>(i) * 2654435761u + 17u);
                 const glm::uvec3 h = glint::pcg3d(glm::uvec3(static_cast<std::uint32_t>(i), 9u, 9u));
                 const glm::vec2 uv(glint::unit_from_bits<float>(h.x) * 97.0f, glint::unit_from_bits<float>(h.y) * 89.0f);
                 const double m = static_cast<double>(glint::modulation(glint::grid_sample(uv, dx, dy, g, s.light)));
@@ -103,15 +58,14 @@ section grid_section(double min_time) {
     section out;
     std::ostringstream md, csv, doc;
     // --- D_Omega pieces -------------------------------------------------------------------
-    const auto cases = light_cases();
+    // The unit test's lights without its far cones (a subset: 432 lights).
+    const auto cases = glint_test::light_cases(false);
     std::vector<double> refs;
-    for (const auto& c : cases)
-        refs.push_back(c.cone ? glint_test::reference_cone(c.d, c.wo, c.alpha, c.axis, c.radius)
-                              : glint_test::reference_rect(c.d, c.wo, c.alpha, c.p0, c.e1, c.e2));
+    for (const auto& c : cases) refs.push_back(glint_test::reference(c));
     const int piece_knobs[] = {4, 6, 8, 12, 16, 32};
     for (int pieces : piece_knobs) {
         add("d_omega_" + std::to_string(pieces), [&cases, pieces](std::size_t i) {
-            benchmark::DoNotOptimize(d_omega_float(cases[i % cases.size()], pieces));
+            benchmark::DoNotOptimize(glint_test::d_omega<float>(cases[i % cases.size()], pieces));
         }, min_time);
     }
     // --- grid estimate per variant and slope cell ------------------------------------------
@@ -169,8 +123,8 @@ section grid_section(double min_time) {
         for (std::size_t i = 0; i < cases.size(); ++i) {
             if (refs[i] < 1e-30) continue;
             const double floor = 1e-9 * glint::total_area(cases[i].d, cases[i].alpha);
-            worst = std::max(worst, std::fabs(d_omega_double(cases[i], pieces) - refs[i]) / std::max(refs[i], floor));
-            worst_f = std::max(worst_f, std::fabs(static_cast<double>(d_omega_float(cases[i], pieces)) - refs[i]) / std::max(refs[i], floor));
+            worst = std::max(worst, std::fabs(glint_test::d_omega<double>(cases[i], pieces) - refs[i]) / std::max(refs[i], floor));
+            worst_f = std::max(worst_f, std::fabs(static_cast<double>(glint_test::d_omega<float>(cases[i], pieces)) - refs[i]) / std::max(refs[i], floor));
         }
         const double t = ns.at("d_omega_" + std::to_string(pieces));
         t1 << "| " << pieces << (pieces == 8 ? " (default)" : "") << " | " << fmt(worst) << " | " << fmt(worst_f) << " | " << fmt(t, "%.0f") << " |\n";
@@ -185,7 +139,7 @@ section grid_section(double min_time) {
     for (int v = 0; v <= 4; ++v) {
         const auto var = static_cast<glint::binomial_variant>(v);
         const double ts = ns.at("grid_" + std::string(glint::name(var)) + "_sun"), tp = ns.at("grid_" + std::string(glint::name(var)) + "_point");
-        const auto b = grid_bias(var, 0.02f);
+        const auto b = grid_bias(var);
         t2 << "| " << glint::name(var) << (v == 4 ? " (default)" : "") << " | " << fmt(ts, "%.0f") << " | " << fmt(tp, "%.0f") << " | "
            << fmt(b.worst) << " (" << fmt(b.se, "%.2g") << ") | " << b.where << " |\n";
         csv << "grid," << glint::name(var) << ",float,largest |mean R/E[R] - 1| (6000 seeds),"

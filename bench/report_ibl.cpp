@@ -69,7 +69,7 @@ section ibl_section(double min_time) {
                             g.seed = static_cast<std::uint32_t>(it);
                             const auto est = glint::ibl_sample(glm::vec2(static_cast<float>(x), static_cast<float>(y)), glm::vec2(1, 0), glm::vec2(0, 1), g,
                                                                env->levels(), s.indicators, env->visible_area(cos_o, sa), dh);
-                            m = glint::ibl_modulation(est);
+                            m = glint::modulation(est);
                         }
                         acc += env->albedo(cos_o, sa) * s.radiance.x * m;
                     }

@@ -35,12 +35,6 @@ namespace {
     std::exit(2);
 }
 
-float parse_float(const std::string& flag, const std::string& s, float lo, float hi) {
-    const auto v = parse_number(s, lo, hi);
-    if (!v) usage(range_message(flag, s, lo, hi));
-    return *v;
-}
-
 
 }  // namespace
 
@@ -62,9 +56,9 @@ int main(int argc, char** argv) {
             if (v != "4" && v != "8") usage("--k must be 4 or 8, got '" + v + "'");
             K = std::stoi(v);
         } else if (a == "--smooth") smooth = true;
-        else if (a == "--seed") seed = static_cast<std::uint32_t>(parse_float(a, value(), 0, 4e9f));
-        else if (a == "--density") log_density = parse_float(a, value(), -20, 40);
-        else if (a == "--roughness") roughness = parse_float(a, value(), 1e-3f, 1);
+        else if (a == "--seed") seed = static_cast<std::uint32_t>(parse_float(a, value(), 0, 4e9f, usage));
+        else if (a == "--density") log_density = parse_float(a, value(), -20, 40, usage);
+        else if (a == "--roughness") roughness = parse_float(a, value(), 1e-3f, 1, usage);
         else if (a == "--size") {
             const std::string v = value();
             char x = 0;
@@ -129,7 +123,7 @@ int main(int argc, char** argv) {
                         g.log_density = log_density;
                         g.seed = seed * 0x9E3779B9u;
                         const auto e = glint::ibl_sample(ht.uv, duvdx, duvdy, g, env.levels(), s.indicators, env.visible_area(cos_o, sa), dh);
-                        m = glint::ibl_modulation(e);
+                        m = glint::modulation(e);
                     }
                     const float albedo = env.albedo(cos_o, sa);
                     for (int c = 0; c < 3; ++c) L[c] = glint::fresnel_conductor(silver_eta[c], silver_k[c], cos_o) * albedo * s.radiance[c] * m;

@@ -35,12 +35,6 @@ namespace {
     std::exit(2);
 }
 
-float parse_float(const std::string& flag, const std::string& s, float lo, float hi) {
-    const auto v = parse_number(s, lo, hi);
-    if (!v) usage(range_message(flag, s, lo, hi));
-    return *v;
-}
-
 struct settings {
     scene_options scene;
     std::string out = "glint_lights.exr";
@@ -63,11 +57,11 @@ settings parse(int argc, char** argv) {
         } else if (a == "--smooth") {
             s.scene.smooth = true;
         } else if (a == "--seed") {
-            s.scene.seed = static_cast<std::uint32_t>(parse_float(a, value(), 0, 4e9f));
+            s.scene.seed = static_cast<std::uint32_t>(parse_float(a, value(), 0, 4e9f, usage));
         } else if (a == "--density") {
-            s.scene.log_density = parse_float(a, value(), -20, 40);
+            s.scene.log_density = parse_float(a, value(), -20, 40, usage);
         } else if (a == "--roughness") {
-            s.scene.roughness = parse_float(a, value(), 1e-4f, 1);
+            s.scene.roughness = parse_float(a, value(), 1e-4f, 1, usage);
         } else if (a == "--variant") {
             const std::string v = value();
             bool found = false;

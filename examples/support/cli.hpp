@@ -5,22 +5,19 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
-#include <optional>
 #include <string>
 
 namespace glint_examples {
 
-// The number in `s` if it parses completely and lies in [lo, hi]; otherwise nothing (the caller
-// reports the flag, the range and the text).
-inline std::optional<float> parse_number(const std::string& s, float lo, float hi) {
+// The number in `s` if it parses completely and lies in [lo, hi]; otherwise `fail` (which does not
+// return) gets a message naming the flag, the range and the text.
+template <class Fail>
+float parse_float(const std::string& flag, const std::string& s, float lo, float hi, Fail fail) {
     char* end = nullptr;
     const float v = std::strtof(s.c_str(), &end);
-    if (end == s.c_str() || *end != '\0' || !std::isfinite(v) || v < lo || v > hi) return std::nullopt;
+    if (end == s.c_str() || *end != '\0' || !std::isfinite(v) || v < lo || v > hi)
+        fail(flag + " needs a number in [" + std::to_string(lo) + ", " + std::to_string(hi) + "], got '" + s + "'");
     return v;
-}
-
-inline std::string range_message(const std::string& flag, const std::string& s, float lo, float hi) {
-    return flag + " needs a number in [" + std::to_string(lo) + ", " + std::to_string(hi) + "], got '" + s + "'";
 }
 
 // Exposure, the tone curve x / (1 + x), then the sRGB transfer function, to 8 bits.

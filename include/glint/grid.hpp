@@ -139,10 +139,13 @@ grid_estimate<real> grid_sample(const vec2_t<real>& uv, const vec2_t<real>& duvd
     return detail::glsl::grid_kernels<real>::glint_grid_sample(uv, duvdx, duvdy, detail::to_kernel<detail::glsl::grid_kernels<real>>(g), light);
 }
 
-// (A template on the estimate type: real cannot be deduced through the kernel struct.)
+// R / E[R], the factor on the smooth result (the kernels' glint_modulation; 0 if E[R] = 0), for
+// the estimates of glint::grid_sample and glint::ibl_sample. Each component's kernel struct has
+// its own estimate type, and real cannot be deduced through it: a template on the estimate.
 template <class estimate>
 auto modulation(const estimate& e) -> decltype(e.value) {
-    return detail::glsl::grid_kernels<decltype(e.value)>::glint_modulation(e);
+    using real = decltype(e.value);
+    return e.expected > real(0) ? e.value / e.expected : real(0);
 }
 
 // The lattice points and weights of a footprint (for tests and visualisation).

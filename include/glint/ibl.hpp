@@ -7,7 +7,7 @@
 //   auto s = env.lookup(r, std::sqrt(alpha));                 // radiance RGB + the K indicators
 //   float e_rho = env.albedo(cos_o, std::sqrt(alpha)), e_d = env.visible_area(cos_o, std::sqrt(alpha));
 //   auto e = glint::ibl_sample(uv, duvdx, duvdy, grid, env.levels(), s.indicators, e_d, env.total_area(alpha));
-//   radiance = F * e_rho * s.radiance * glint::ibl_modulation(e);   // mean: the smooth split-sum IBL
+//   radiance = F * e_rho * s.radiance * glint::modulation(e);   // mean: the smooth split-sum IBL
 //
 // The environment (host side, may allocate and throw glint::error):
 // - radiance levels (KK25 Eq. 18) from the luminance, clipped below at the black level l, and the
@@ -71,7 +71,7 @@ using ibl_levels = typename detail::glsl::ibl_kernels<real>::glint_ibl_levels;
 template <class real>
 using ibl_indicators = typename detail::glsl::ibl_kernels<real>::glint_ibl_indicators;
 template <class real>
-using ibl_estimate = typename detail::glsl::ibl_kernels<real>::glint_ibl_estimate;
+using ibl_estimate = typename detail::glsl::ibl_kernels<real>::glint_grid_estimate;
 
 // The glint estimate under the environment (kernels/ibl.glsl, glint_ibl_sample).
 template <class real>
@@ -79,11 +79,6 @@ ibl_estimate<real> ibl_sample(const vec2_t<real>& uv, const vec2_t<real>& duvdx,
                               const ibl_levels<real>& levels, const ibl_indicators<real>& indicators, real e_d, real d_h) {
     return detail::glsl::ibl_kernels<real>::glint_ibl_sample(uv, duvdx, duvdy, detail::to_kernel<detail::glsl::ibl_kernels<real>>(g), levels,
                                                              indicators, e_d, d_h);
-}
-
-template <class estimate>
-auto ibl_modulation(const estimate& e) -> decltype(e.value) {
-    return e.expected > 0 ? e.value / e.expected : decltype(e.value)(0);
 }
 
 struct ibl_options {
@@ -146,17 +141,20 @@ public:
 private:
     friend environment build_environment(int width, int height, const std::vector<float>& rgb, const ibl_options& o);
 
-    void fetch(const map& m, const glm::vec2& uv, float* out) const {
-        using k = detail::glsl::ibl_kernels<float>;
-        const auto taps = k::glint_bilinear(uv, m.width, m.height);
-        const int C = channels();
-        for (int c = 0; c < C; ++c) out[c] = 0;
+    // out[0..C) += weight x the GL_LINEAR filtered texel of m at uv.
+    static void add_bilinear(const map& m, const glm::vec2& uv, int C, float weight, float* out) {
+        const auto taps = detail::glsl::ibl_kernels<float>::glint_bilinear(uv, m.width, m.height);
         for (int i = 0; i < 4; ++i) {
-            const float w = taps.weight[i];
+            const float w = weight * taps.weight[i];
             const float* px = &m.data[(static_cast<std::size_t>(taps.texel[i].y) * static_cast<std::size_t>(m.width) + static_cast<std::size_t>(taps.texel[i].x)) *
                                       static_cast<std::size_t>(C)];
             for (int c = 0; c < C; ++c) out[c] += w * px[c];
         }
+    }
+
+    void fetch(const map& m, const glm::vec2& uv, float* out) const {
+        for (int c = 0; c < channels(); ++c) out[c] = 0;
+        add_bilinear(m, uv, channels(), 1.0f, out);
     }
 
     float table(const std::vector<float>& t, float x, float y) const {
@@ -299,15 +297,7 @@ inline environment build_environment(int width, int height, const std::vector<fl
         for (int c = 0; c < C; ++c) out[c] = 0;
         for (int side = 0; side < 2; ++side) {
             const float wl = side == 0 ? 1 - t : t;
-            if (!(wl > 0)) continue;
-            const auto& m = pyramid[side == 0 ? l0 : l1];
-            const auto taps = k::glint_bilinear(uv, m.width, m.height);
-            for (int i = 0; i < 4; ++i) {
-                const float w = wl * taps.weight[i];
-                const float* px = &m.data[(static_cast<std::size_t>(taps.texel[i].y) * static_cast<std::size_t>(m.width) + static_cast<std::size_t>(taps.texel[i].x)) *
-                                          static_cast<std::size_t>(C)];
-                for (int c = 0; c < C; ++c) out[c] += w * px[c];
-            }
+            if (wl > 0) environment::add_bilinear(pyramid[side == 0 ? l0 : l1], uv, C, wl, out);
         }
     };
     // The roughness chain.

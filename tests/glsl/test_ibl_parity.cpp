@@ -67,7 +67,7 @@ TEST_CASE("ibl: equirectangular mapping, fuzzy weights and the glint estimate: G
         " for (int k = 0; k < 8; ++k) ind.w[k] /= s;"
         " glint_grid_params g; g.log_density = -2.0 + 10.0 * r[11]; g.density_sigma = 0.0; g.lod_scale = 1.5; g.slope_cell = 0.02;"
         " g.smooth_tolerance = 0.0; g.variant = 4; g.pow_method = 2; g.seed = i * 747796405u;"
-        " glint_ibl_estimate e = glint_ibl_sample(vec2(r[0], r[1]) * 100.0, vec2(1.0, 0.1), vec2(-0.2, 0.8), g, lv, ind, 0.9, 1.1);"
+        " glint_grid_estimate e = glint_ibl_sample(vec2(r[0], r[1]) * 100.0, vec2(1.0, 0.1), vec2(-0.2, 0.8), g, lv, ind, 0.9, 1.1);"
         " out0[6u*i] = floatBitsToUint(d.x); out0[6u*i+1u] = floatBitsToUint(uv.x); out0[6u*i+2u] = floatBitsToUint(uv.y);"
         " out0[6u*i+3u] = floatBitsToUint(jt.x + jt.y); out0[6u*i+4u] = floatBitsToUint(e.value); out0[6u*i+5u] = floatBitsToUint(e.expected);";
     const auto gpu = glint_test::from_words<float>(glint_test::map_words(

@@ -131,7 +131,7 @@ TEST_CASE("ibl: white furnace (KK25 Fig. 7): the mean of 4096 realisations equal
             g.seed = i * 2654435761u;
             const auto e = glint::ibl_sample(glm::vec2(static_cast<float>(i) * 13.7f, 5.0f), glm::vec2(10.0f, 0.0f), glm::vec2(0.0f, 10.0f), g,
                                              env.levels(), s.indicators, env.visible_area(0.7f, 0.5f), env.total_area(0.25f));
-            m.add(static_cast<double>(glint::ibl_modulation(e)));
+            m.add(static_cast<double>(glint::modulation(e)));
         }
         const auto t = gt::mean_test(m, 1.0, alpha_each);
         MESSAGE("ln density " << logd << ": mean glint / smooth " << t.mean << " +- " << t.standard_error << " (resolves " << t.resolution << ")");
@@ -257,7 +257,7 @@ TEST_CASE("ibl: a brute-force footprint of N discrete microfacets agrees in mean
                     g.seed = i * 2654435761u + 99u;
                     const auto e = glint::ibl_sample(glm::vec2(static_cast<float>(i) * 37.1f, 3.0f), glm::vec2(10.0f, 0.0f), glm::vec2(0.0f, 10.0f), g,
                                                      env.levels(), s.indicators, env.visible_area(wo.y, sa), env.total_area(alpha));
-                    model.add(smooth * static_cast<double>(glint::ibl_modulation(e)));
+                    model.add(smooth * static_cast<double>(glint::modulation(e)));
                 }
                 // The glint result's mean is its smooth result (the unbiasedness, exactly)...
                 const auto t = gt::mean_test(model, smooth, alpha_each);

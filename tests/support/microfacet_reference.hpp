@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 #include <vector>
 
 #include <boost/math/quadrature/gauss_kronrod.hpp>
@@ -99,6 +100,64 @@ inline double reference_rect(glint::ndf d, const dvec3& wo, const dvec2& alpha, 
         return integrate_1d(inner, lo, hi, yb);
     };
     return integrate_1d(outer, 0.0, 1.0, xb, 1e-9);
+}
+
+// One light of the D_Omega comparisons (unit test and report): a cone (axis, radius) or a
+// rectangle (p0, e1, e2) seen from view wo at roughness alpha.
+struct light_case {
+    std::string what;
+    glint::ndf d;
+    dvec2 alpha;
+    dvec3 wo;
+    bool cone;
+    dvec3 axis;
+    double radius;
+    dvec3 p0, e1, e2;
+};
+
+// Cones (the sun's 0.26 degrees, 3 and 23 degrees) and rectangles (small to wider than the
+// lobe), at and near the mirror direction (and, with `far_cones`, cones 4 radii plus 0.3 rad
+// away), from normal to grazing views, sharp to rough, isotropic and anisotropic, including lights
+// cut by the horizon.
+inline std::vector<light_case> light_cases(bool far_cones) {
+    std::vector<light_case> cases;
+    for (glint::ndf d : {glint::ndf::ggx, glint::ndf::beckmann})
+        for (dvec2 a : {dvec2(2e-3, 2e-3), dvec2(0.02, 0.08), dvec2(0.2, 0.2), dvec2(0.5, 0.25)})
+            for (double theta_o : {0.0, 0.8, 1.4}) {
+                const dvec3 wo(std::sin(theta_o), 0, std::cos(theta_o));
+                const dvec3 r = mirror(wo);
+                const dvec3 side = glm::normalize(glm::cross(r, dvec3(0.3, 1, 0.2)));
+                for (double radius : {0.00454, 0.05, 0.4})
+                    for (double off : {0.0, 0.5, 1.5, 4.0}) {
+                        if (off > 3 && !far_cones) continue;
+                        const double ang = off * radius + (off > 3 ? 0.3 : 0);
+                        const dvec3 c = std::cos(ang) * r + std::sin(ang) * side;
+                        cases.push_back({"cone", d, a, wo, true, c, radius, {}, {}, {}});
+                    }
+                for (double size : {0.05, 0.5, 3.0})
+                    for (double off : {0.0, 0.5, 1.5}) {
+                        const double ang = off * size / 2;
+                        const dvec3 c = std::cos(ang) * r + std::sin(ang) * side;
+                        dvec3 e1 = glm::normalize(glm::cross(c, dvec3(0, 0.2, 1))) * size;
+                        dvec3 e2 = glm::normalize(glm::cross(e1, c)) * size * 0.6;
+                        if (glm::dot(glm::cross(e1, e2), c) > 0) std::swap(e1, e2);
+                        cases.push_back({"rect", d, a, wo, false, {}, 0, c * 2.0 - 0.5 * e1 - 0.5 * e2, e1, e2});
+                    }
+            }
+    return cases;
+}
+
+inline double reference(const light_case& c) {
+    return c.cone ? reference_cone(c.d, c.wo, c.alpha, c.axis, c.radius) : reference_rect(c.d, c.wo, c.alpha, c.p0, c.e1, c.e2);
+}
+
+// glint's D_Omega for the light in float or double.
+template <class real>
+real d_omega(const light_case& c, int pieces) {
+    using v2 = glm::vec<2, real, glm::defaultp>;
+    using v3 = glm::vec<3, real, glm::defaultp>;
+    return c.cone ? glint::integrated_ndf_cone<real>(c.d, v3(c.wo), v2(c.alpha), v3(c.axis), static_cast<real>(c.radius), pieces)
+                  : glint::integrated_ndf_rect<real>(c.d, v3(c.wo), v2(c.alpha), v3(c.p0), v3(c.e1), v3(c.e2), pieces);
 }
 
 }  // namespace glint_test

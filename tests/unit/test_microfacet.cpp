@@ -111,61 +111,15 @@ TEST_CASE("the radial mass and tail closed forms agree with quadrature, and with
     CHECK(worst_float < 2e-6);
 }
 
-namespace {
-
-struct light_case {
-    std::string what;
-    glint::ndf d;
-    dvec2 alpha;
-    dvec3 wo;
-    bool cone;
-    dvec3 axis;
-    double radius;
-    dvec3 p0, e1, e2;
-};
-
-// Cones (the sun's 0.26 degrees, 3 and 23 degrees) and rectangles (small to wider than the
-// lobe), at, near and far from the mirror direction, from normal to grazing views, sharp to
-// rough, isotropic and anisotropic, including lights cut by the horizon.
-std::vector<light_case> light_cases() {
-    std::vector<light_case> cases;
-    for (glint::ndf d : both_ndfs)
-        for (dvec2 a : {dvec2(2e-3, 2e-3), dvec2(0.02, 0.08), dvec2(0.2, 0.2), dvec2(0.5, 0.25)})
-            for (double theta_o : {0.0, 0.8, 1.4}) {
-                const dvec3 wo = spherical(theta_o, 0.0);
-                const dvec3 r = glint_test::mirror(wo);
-                const dvec3 side = glm::normalize(glm::cross(r, dvec3(0.3, 1, 0.2)));
-                for (double radius : {0.00454, 0.05, 0.4})
-                    for (double off : {0.0, 0.5, 1.5, 4.0}) {
-                        const double ang = off * radius + (off > 3 ? 0.3 : 0);
-                        const dvec3 c = std::cos(ang) * r + std::sin(ang) * side;
-                        cases.push_back({"cone", d, a, wo, true, c, radius, {}, {}, {}});
-                    }
-                for (double size : {0.05, 0.5, 3.0})
-                    for (double off : {0.0, 0.5, 1.5}) {
-                        const double ang = off * size / 2;
-                        const dvec3 c = std::cos(ang) * r + std::sin(ang) * side;
-                        dvec3 e1 = glm::normalize(glm::cross(c, dvec3(0, 0.2, 1))) * size;
-                        dvec3 e2 = glm::normalize(glm::cross(e1, c)) * size * 0.6;
-                        if (glm::dot(glm::cross(e1, e2), c) > 0) std::swap(e1, e2);
-                        cases.push_back({"rect", d, a, wo, false, {}, 0, c * 2.0 - 0.5 * e1 - 0.5 * e2, e1, e2});
-                    }
-            }
-    return cases;
-}
-
-}  // namespace
 
 // The documented accuracy (docs/grid.md): with the default 8 pieces per edge the worst relative
 // error over these lights is 2.0e-4 (sharp lobes at 80 degrees under lights cut by the horizon),
 // 9.3e-6 with 16 and 4.1e-8 with 32; in float at least 1.5e-4, set by the rounding of wi + wo at
 // grazing angles for roughness 0.002 (a relative error of 1e-4 in the half vector's slope).
 TEST_CASE("D_Omega for cones and rectangles agrees with 2D adaptive quadrature over the light") {
-    const auto cases = light_cases();
+    const auto cases = glint_test::light_cases(true);
     std::vector<double> refs;
-    for (const auto& c : cases)
-        refs.push_back(c.cone ? glint_test::reference_cone(c.d, c.wo, c.alpha, c.axis, c.radius)
-                              : glint_test::reference_rect(c.d, c.wo, c.alpha, c.p0, c.e1, c.e2));
+    for (const auto& c : cases) refs.push_back(glint_test::reference(c));
     for (int pieces : {8, 32}) {
         double worst = 0, worst_float = 0;
         std::string worst_what;
@@ -173,12 +127,8 @@ TEST_CASE("D_Omega for cones and rectangles agrees with 2D adaptive quadrature o
         for (std::size_t i = 0; i < cases.size(); ++i) {
             const auto& c = cases[i];
             const double ref = refs[i];
-            const double m = c.cone ? glint::integrated_ndf_cone(c.d, c.wo, c.alpha, c.axis, c.radius, pieces)
-                                    : glint::integrated_ndf_rect(c.d, c.wo, c.alpha, c.p0, c.e1, c.e2, pieces);
-            const float mf = c.cone ? glint::integrated_ndf_cone<float>(c.d, glm::vec3(c.wo), glm::vec2(c.alpha), glm::vec3(c.axis),
-                                                                        static_cast<float>(c.radius), pieces)
-                                    : glint::integrated_ndf_rect<float>(c.d, glm::vec3(c.wo), glm::vec2(c.alpha), glm::vec3(c.p0),
-                                                                        glm::vec3(c.e1), glm::vec3(c.e2), pieces);
+            const double m = glint_test::d_omega<double>(c, pieces);
+            const float mf = glint_test::d_omega<float>(c, pieces);
             if (ref < 1e-30) {
                 CHECK(m < 1e-30);
                 continue;

@@ -50,12 +50,6 @@ GLINT_FN vec2 glint_ibl_fuzzy_weight(real y, glint_ibl_levels lv, bool log_space
     return vec2(real(j), clamp(t, real(0), real(1)));
 }
 
-struct glint_ibl_estimate {
-    real value;     // sum_k L_k M_k / N
-    real expected;  // sum_k L_k p_k
-    int draws;      // binomial draws made
-};
-
 // The per-level reflection probabilities p_k = E_D w_k / D_H (KK25 Eq. 15, 21), scaled down if they
 // sum to more than 1.
 GLINT_FN glint_multinomial_probabilities glint_ibl_probabilities(glint_ibl_levels lv, glint_ibl_indicators ind, real e_d, real d_h) {
@@ -103,16 +97,18 @@ GLINT_FN glint_ibl_shares glint_ibl_level_shares(vec2 uv, glint_footprint f, rea
 // The levels above the black one as multinomial bins 0..K-2.
 GLINT_FN glint_multinomial_probabilities glint_ibl_lit_levels(glint_multinomial_probabilities all, int K) {
     glint_multinomial_probabilities lit;
-    for (int k = 0; k < 8; ++k) lit.p[k] = (k + 1 < K && k + 1 < 8) ? all.p[min(k + 1, 7)] : real(0);
+    for (int k = 0; k < 7; ++k) lit.p[k] = (k + 1 < K) ? all.p[k + 1] : real(0);
+    lit.p[7] = real(0);
     return lit;
 }
 
-// The glint estimate for one footprint under the environment (KK25 Eq. 17): modulation =
-// value / expected. Same grid as glint_grid_sample, without the half-vector interpolation
+// The glint estimate for one footprint under the environment (KK25 Eq. 17), in grid.glsl's
+// estimate struct: value = sum_k L_k M_k / N, expected = sum_k L_k p_k, and glint_modulation
+// gives the factor on the smooth result. Same grid as glint_grid_sample, without the half-vector interpolation
 // (KK25 Sec. 3.3: IBL has no single half vector).
-GLINT_FN glint_ibl_estimate glint_ibl_sample(vec2 uv, vec2 duvdx, vec2 duvdy, glint_grid_params g, glint_ibl_levels lv,
+GLINT_FN glint_grid_estimate glint_ibl_sample(vec2 uv, vec2 duvdx, vec2 duvdy, glint_grid_params g, glint_ibl_levels lv,
                                              glint_ibl_indicators ind, real e_d, real d_h) {
-    glint_ibl_estimate o;
+    glint_grid_estimate o;
     o.value = real(0);
     o.expected = real(0);
     o.draws = 0;
@@ -138,10 +134,6 @@ GLINT_FN glint_ibl_estimate glint_ibl_sample(vec2 uv, vec2 duvdx, vec2 duvdy, gl
     for (int k = 1; k < 8; ++k) o.value += (k < K) ? lv.radiance[k] * sh.share[k] : real(0);
     o.draws = sh.draws;
     return o;
-}
-
-GLINT_FN real glint_ibl_modulation(glint_ibl_estimate e) {
-    return (e.expected > real(0)) ? e.value / e.expected : real(0);
 }
 
 // ---------------------------------------------------------------------------------------------

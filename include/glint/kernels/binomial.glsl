@@ -88,17 +88,68 @@ GLINT_FN glint_binomial_gates glint_binomial_dual_gates(real N, real p, real u1,
     return g;
 }
 
-// KK25 Alg. 1, the dual-gated Gaussian: the Gaussian part is N(1 + (N2 - 2) p, (N2 - 2) p (1 - p))
-// clamped to [1, N2 - 1] (lines 16-19). KK25 evaluates line 6 with Eq. 25 (method GLINT_POW_KK25).
-GLINT_FN glint_binomial glint_binomial_dual_gated(real N, real p, real u1, real u2, int method) {
+// Shortcuts that skip the transcendentals where the result is already decided. Each gives the
+// result the full evaluation gives (tests compare the two at every grid point and at u1 next to
+// every bound); the published samplers stay the functions they were.
+//
+// The gate probabilities as the kernels compute them, for methods kk25 and log1p (naive rounds
+// 1 - p to 1 below p = 2^-25 and has no such bounds), N > 2, q = p or 1 - p:
+//   1 - (1 - q)^N <= N q (Bernoulli's inequality), computed to within a relative 2.5e-4 (Eq. 25's
+//   model error eps / 2 = 1.4e-4 plus the rounding of 1 - c p, 2^-25 / eps = 1.0e-4) plus an
+//   absolute 6e-8 (one ulp below 1): bounded by N q 1.001 + 1e-5;
+//   (1 - q)^N <= exp(-N q) <= 1 / (1 + N q), computed to within the same relative error: bounded
+//   by 1.001 / (1 + 0.999 N q).
+
+// 1 where the near-end gate surely fires (the near count is 0: n = 0 for p <= 1/2, n = N
+// otherwise), else 0. N > 2; u1 beyond N min(p, 1 - p) 1.001 + 1e-5.
+GLINT_FN bool glint_binomial_surely_near_end(real N, real p, real u1, int method) {
+    real bound = N * min(p, real(1) - p) * real(1.001) + real(1e-5);
+    bool beyond = (p <= real(0.5)) ? (u1 >= bound) : (u1 < real(1) - bound);
+    return N > real(2) && method != GLINT_POW_NAIVE && beyond;
+}
+
+// The near-end result: (0, N) for p <= 1/2, (N, 0) otherwise.
+GLINT_FN glint_binomial glint_binomial_near_end(real N, real p) {
+    return (p <= real(0.5)) ? glint_binomial_pair(real(0), N) : glint_binomial_pair(N, real(0));
+}
+
+// KK25 Alg. 1, the dual-gated Gaussian, every gate evaluated: the Gaussian part is
+// N(1 + (N2 - 2) p, (N2 - 2) p (1 - p)) clamped to [1, N2 - 1] (lines 16-19). KK25 evaluates
+// line 6 with Eq. 25 (method GLINT_POW_KK25). p^N2 and (1 - p)^N2 weigh nothing for N <= 1, and
+// the quantile nothing where the gates fix the result, so neither is evaluated there.
+GLINT_FN glint_binomial glint_binomial_dual_gated_evaluated(real N, real p, real u1, real u2, int method) {
     N = max(N, real(0));
     p = clamp(p, real(0), real(1));
     real N2 = max(real(2), N);
-    glint_binomial_gates g = glint_binomial_dual_gates(N, p, u1, pow(p, N2), glint_pow_one_minus(p, N2, method));
-    real mu = real(1) + (N2 - real(2)) * p;
-    real sigma = sqrt((N2 - real(2)) * p * (real(1) - p));
-    real G = clamp(mu + sigma * glint_normal_quantile(u2), real(1), N2 - real(1));
+    real all_positive = real(0), all_negative = real(0);
+    if (N > real(1)) {
+        all_positive = pow(p, N2);
+        all_negative = glint_pow_one_minus(p, N2, method);
+    }
+    glint_binomial_gates g = glint_binomial_dual_gates(N, p, u1, all_positive, all_negative);
+    real G = real(1);
+    if (g.gaussian > real(0.5)) {
+        real mu = real(1) + (N2 - real(2)) * p;
+        real sigma = sqrt((N2 - real(2)) * p * (real(1) - p));
+        G = clamp(mu + sigma * glint_normal_quantile(u2), real(1), N2 - real(1));
+    }
     return glint_binomial_pair(g.positive_fixed + g.gaussian * G, g.negative_fixed + g.gaussian * (N2 - G));
+}
+
+// KK25 Alg. 1 with the shortcuts: the near-end gate, and for N > 2 the middle where u1 is surely
+// above p^N and below 1 - (1 - p)^N (then n is the clamped Gaussian alone).
+GLINT_FN glint_binomial glint_binomial_dual_gated(real N, real p, real u1, real u2, int method) {
+    N = max(N, real(0));
+    p = clamp(p, real(0), real(1));
+    if (glint_binomial_surely_near_end(N, p, u1, method)) return glint_binomial_near_end(N, p);
+    bool above_all_positive = u1 * (real(1) + real(0.999) * N * (real(1) - p)) >= real(1.001);
+    bool below_all_negative = (real(1) - u1 - real(1e-6)) * (real(1) + real(0.999) * N * p) >= real(1.001);
+    if (N > real(2) && method != GLINT_POW_NAIVE && above_all_positive && below_all_negative) {
+        real sigma = sqrt((N - real(2)) * p * (real(1) - p));
+        real G = clamp(real(1) + (N - real(2)) * p + sigma * glint_normal_quantile(u2), real(1), N - real(1));
+        return glint_binomial_pair(G, N - G);
+    }
+    return glint_binomial_dual_gated_evaluated(N, p, u1, u2, method);
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -208,7 +259,7 @@ struct glint_binomial_ends {
     real lower;         // 1 for p <= 1/2
 };
 
-GLINT_FN glint_binomial_ends glint_binomial_unbiased_ends(real N, real p, int method) {
+GLINT_FN glint_binomial_ends glint_binomial_unbiased_ends_evaluated(real N, real p, int method) {
     glint_binomial_ends e;
     e.lower = (p <= real(0.5)) ? real(1) : real(0);
     real p_near = (e.lower > real(0.5)) ? p : real(1) - p;
@@ -232,6 +283,29 @@ GLINT_FN glint_binomial_ends glint_binomial_unbiased_ends(real N, real p, int me
         e.any_near = glint_any_success(p_near, N, method);
     }
     return e;
+}
+
+// Where N min(p, 1 - p) reaches this, both end probabilities fall below the smallest normal number
+// as glint_binomial_unbiased_ends_evaluated computes them (methods kk25 and log1p): the near end
+// is at most exp(-N p_near), the far end at most 2^-N, and exp(-88) = 6.1e-39 < 2^-126 = 1.2e-38,
+// exp(-709) = 1.2e-308 < 2^-1022 = 2.2e-308. Taken as 0 they change nothing that rounding keeps
+// (every term they enter is at most N p_near exp(-N p_near) against terms of order N p_near, and
+// a gate compares them with u1, for which 0 and a subnormal decide alike when u1 is normal; the
+// shortcut test compares results bit for bit), and they spare the subnormal arithmetic, which
+// costs about 150 ns here.
+GLINT_CONST(real) GLINT_BINOMIAL_UNDERFLOW_MEAN = GLINT_DOUBLE ? real(709) : real(88);
+
+// The ends, without a transcendental where both are below the normal range.
+GLINT_FN glint_binomial_ends glint_binomial_unbiased_ends(real N, real p, int method) {
+    if (N * min(p, real(1) - p) >= GLINT_BINOMIAL_UNDERFLOW_MEAN && method != GLINT_POW_NAIVE) {
+        glint_binomial_ends e;
+        e.lower = (p <= real(0.5)) ? real(1) : real(0);
+        e.all_positive = real(0);
+        e.all_negative = real(0);
+        e.any_near = real(1);
+        return e;
+    }
+    return glint_binomial_unbiased_ends_evaluated(N, p, method);
 }
 
 GLINT_FN glint_binomial_middle glint_binomial_unbiased_middle_setup(real N, real p, glint_binomial_ends e) {
@@ -348,10 +422,25 @@ GLINT_FN real glint_binomial_unbiased_middle(glint_binomial_middle q, real N2, r
 
 // The mean-preserving dual-gated sampler: KK25 Alg. 1's gates (exact for N <= 2), and for N > 2
 // a middle part whose mean is E[n | 1 <= n <= N - 1] exactly and whose variance matches the
-// binomial's on that event (glint/binomial.hpp derives it).
+// binomial's on that event (glint/binomial.hpp derives it). Skips every transcendental where the
+// near-end gate surely fires (glint_binomial_surely_near_end), with the same result.
 GLINT_FN glint_binomial glint_binomial_unbiased(real N, real p, real u1, real u2, int method) {
     N = clamp(N, real(0), GLINT_BINOMIAL_MAX_N);
     p = clamp(p, real(0), real(1));
+    if (glint_binomial_surely_near_end(N, p, u1, method)) return glint_binomial_near_end(N, p);
+    if (N <= real(1)) {
+        // At most one outcome (KK25 Fig. 4): Alg. 1's gates with p^N2 and (1 - p)^N2 weighted by 0
+        // reduce to two comparisons.
+        real weight_1 = max(real(0), real(1) - abs(real(1) - N));
+        real positive = (u1 < weight_1 * p) ? real(1) : real(0);
+        real negative = ((real(1) <= u1) ? real(1) : real(0)) + ((real(1) - weight_1 * (real(1) - p) <= u1) ? real(1) : real(0));
+        return glint_binomial_pair(positive, negative);
+    }
+    if (N <= real(2)) {
+        // Alg. 1's gates alone decide (the middle is the single count 1), from the exact squares.
+        glint_binomial_gates g = glint_binomial_dual_gates(N, p, u1, p * p, (real(1) - p) * (real(1) - p));
+        return glint_binomial_pair(g.positive_fixed + g.gaussian, g.negative_fixed + g.gaussian);
+    }
     real N2 = max(real(2), N);
     glint_binomial_ends e = glint_binomial_unbiased_ends(N2, p, method);
     glint_binomial_gates g = glint_binomial_dual_gates(N, p, u1, e.all_positive, e.all_negative);

@@ -50,6 +50,15 @@
 // The overall mean is then N p^N + P(M) (1 + m) = N p, up to the rounding of the closed forms
 // (about one ulp of N p); the variance matches wherever t's fit does (the far-bound remap
 // shrinks it a little for N below about 10). Measured figures: docs/binomial.md.
+//
+// Cost. binomial_dual_gated and binomial_unbiased evaluate a transcendental only where it can
+// change the result, and return bit for bit what the straight-line evaluation returns (for u1 a
+// normal number; tests/unit/test_binomial_shortcuts.cpp): for N > 2 and methods kk25 and log1p,
+// u1 beyond N min(p, 1 - p) 1.001 + 1e-5 decides the near-end gate (n = 0, or n = N for
+// p > 1/2) from Bernoulli's inequality; the dual-gated middle needs no gate where u1 is surely
+// between p^N and 1 - (1 - p)^N (bounded by 1 / (1 + N q)); the mean-preserving sampler's end
+// probabilities are taken as 0 where they fall below the normal range; N <= 2 needs no
+// transcendental at all. Sparse glints (N p << 1), the common case, then cost two comparisons.
 #pragma once
 
 #include "glint/core.hpp"

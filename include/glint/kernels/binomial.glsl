@@ -100,8 +100,8 @@ GLINT_FN glint_binomial_gates glint_binomial_dual_gates(real N, real p, real u1,
 //   (1 - q)^N <= exp(-N q) <= 1 / (1 + N q), computed to within the same relative error: bounded
 //   by 1.001 / (1 + 0.999 N q).
 
-// 1 where the near-end gate surely fires (the near count is 0: n = 0 for p <= 1/2, n = N
-// otherwise), else 0. N > 2; u1 beyond N min(p, 1 - p) 1.001 + 1e-5.
+// True where the near-end gate surely fires (the near count is 0: n = 0 for p <= 1/2, n = N
+// otherwise): N > 2, method kk25 or log1p, u1 beyond N min(p, 1 - p) 1.001 + 1e-5.
 GLINT_FN bool glint_binomial_surely_near_end(real N, real p, real u1, int method) {
     real bound = N * min(p, real(1) - p) * real(1.001) + real(1e-5);
     bool beyond = (p <= real(0.5)) ? (u1 >= bound) : (u1 < real(1) - bound);

@@ -73,11 +73,14 @@ GLINT_FN glint_multinomial_counts glint_multinomial(real N, glint_multinomial_pr
             right += (k >= mid && k < hi) ? probs.p[k] : real(0);
         }
         real q = (left + right > real(0)) ? clamp(left / (left + right), real(0), real(1)) : real(0.5);
-        vec2 v = glint_multinomial_uniforms(seed, head + 1);
-        real n_left = (v.x < q) ? n : real(0);  // below 2: all of it to one side
-        if (n >= real(2)) {
-            glint_binomial split = glint_binomial_variant(variant, n, q, v.x, v.y, method);
-            n_left = clamp(split.positive, real(0), n);
+        real n_left = real(0);
+        if (n > real(0)) {  // an empty node splits into empty halves: no hash, no draw
+            vec2 v = glint_multinomial_uniforms(seed, head + 1);
+            n_left = (v.x < q) ? n : real(0);  // below 2: all of it to one side
+            if (n >= real(2)) {
+                glint_binomial split = glint_binomial_variant(variant, n, q, v.x, v.y, method);
+                n_left = clamp(split.positive, real(0), n);
+            }
         }
         real n_right = n - n_left;
         if (mid - lo == 1) {

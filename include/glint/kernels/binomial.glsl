@@ -422,8 +422,9 @@ GLINT_FN real glint_binomial_unbiased_middle(glint_binomial_middle q, real N2, r
 
 // The mean-preserving dual-gated sampler: KK25 Alg. 1's gates (exact for N <= 2), and for N > 2
 // a middle part whose mean is E[n | 1 <= n <= N - 1] exactly and whose variance matches the
-// binomial's on that event (glint/binomial.hpp derives it). Skips every transcendental where the
-// near-end gate surely fires (glint_binomial_surely_near_end), with the same result.
+// binomial's on that event (glint/binomial.hpp derives it). With the same result as the
+// straight-line evaluation, it skips every transcendental where the near-end gate surely fires
+// (glint_binomial_surely_near_end) and for N <= 2, and the ends' where both are subnormal.
 GLINT_FN glint_binomial glint_binomial_unbiased(real N, real p, real u1, real u2, int method) {
     N = clamp(N, real(0), GLINT_BINOMIAL_MAX_N);
     p = clamp(p, real(0), real(1));

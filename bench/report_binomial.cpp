@@ -140,11 +140,10 @@ section binomial_section(double min_time) {
             auto r = d(*engine);
             benchmark::DoNotOptimize(r);
         }, per_point);
-        const float N_ = N, p_ = p;
         for (int K : {2, 4, 8}) {
             add_inline(key("multinomial" + std::to_string(K), i), [=](std::size_t j) {
                 const auto s = static_cast<std::uint32_t>(j);
-                const float n = launder(N_), q = launder(p_);
+                const float n = launder(N), q = launder(p);
                 if (K == 2) benchmark::DoNotOptimize(glint::multinomial<2>(n, std::array<float, 2>{0.5f * q, 0.5f * q}, glm::uvec3(s, 1u, 2u)));
                 if (K == 4) benchmark::DoNotOptimize(glint::multinomial<4>(n, std::array<float, 4>{0.25f * q, 0.25f * q, 0.25f * q, 0.25f * q}, glm::uvec3(s, 1u, 2u)));
                 if (K == 8) {

@@ -4,6 +4,7 @@
 
 #include <cstdint>
 #include <cstring>
+#include <initializer_list>
 #include <memory>
 #include <string>
 #include <vector>
@@ -58,6 +59,12 @@ std::vector<std::uint32_t> to_words(const std::vector<T>& v) {
     std::vector<std::uint32_t> w(v.size() * sizeof(T) / 4);
     if (!v.empty()) std::memcpy(w.data(), v.data(), w.size() * 4);
     return w;
+}
+
+// Appends the floats' bit patterns to a word buffer.
+inline void append_words(std::vector<std::uint32_t>& words, std::initializer_list<float> values) {
+    const std::vector<std::uint32_t> w = to_words(std::vector<float>(values));
+    words.insert(words.end(), w.begin(), w.end());
 }
 
 template <class T>

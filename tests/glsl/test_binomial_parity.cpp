@@ -50,7 +50,7 @@ TEST_CASE("binomial kernels: GLSL against C++ over the grid, 256 uniform pairs p
                 u1s.push_back(glint::open_unit_from_bits<float>(h.x)), u2s.push_back(glint::open_unit_from_bits<float>(h.y));
             }
     for (std::size_t i = 0; i < Ns.size(); ++i)
-        for (float f : {Ns[i], ps[i], u1s[i], u2s[i]}) in.push_back(glint_test::to_words(std::vector<float>{f})[0]);
+        glint_test::append_words(in, {Ns[i], ps[i], u1s[i], u2s[i]});
     for (binomial_variant v : {binomial_variant::ungated, binomial_variant::gated_db23, binomial_variant::gated,
                                binomial_variant::dual_gated, binomial_variant::unbiased}) {
         const int method = static_cast<int>(glint::published_pow_method(v));

@@ -50,8 +50,7 @@ TEST_CASE("microfacet kernels: GLSL against C++ (D, Lambda, G2, VNDF, D_H, condu
     for (std::uint32_t i = 0; i < n; ++i) {
         wo[i] = random_direction(i, 1, 0.01f), wi[i] = random_direction(i, 2, 0.01f), m[i] = glm::normalize(wo[i] + wi[i]);
         alpha[i] = glm::vec2(std::exp2(-10.0f * rnd(i, 3)), std::exp2(-10.0f * rnd(i, 4)));
-        for (float f : {wo[i].x, wo[i].y, wo[i].z, wi[i].x, wi[i].y, wi[i].z, alpha[i].x, alpha[i].y})
-            in.push_back(glint_test::to_words(std::vector<float>{f})[0]);
+        glint_test::append_words(in, {wo[i].x, wo[i].y, wo[i].z, wi[i].x, wi[i].y, wi[i].z, alpha[i].x, alpha[i].y});
     }
     const std::string body =
         "vec3 wo = vec3(uintBitsToFloat(in0[8u*i]), uintBitsToFloat(in0[8u*i+1u]), uintBitsToFloat(in0[8u*i+2u]));"
@@ -100,8 +99,7 @@ TEST_CASE("D_Omega kernels: GLSL against C++ for cones and rectangles") {
         axis[i] = glm::normalize(r + 0.3f * (random_direction(i, 6, -1.0f)));
         alpha[i] = std::exp2(-8.0f * rnd(i, 7));
         size[i] = std::exp2(-7.0f + 7.0f * rnd(i, 8));
-        for (float f : {wo[i].x, wo[i].y, wo[i].z, axis[i].x, axis[i].y, axis[i].z, alpha[i], size[i]})
-            in.push_back(glint_test::to_words(std::vector<float>{f})[0]);
+        glint_test::append_words(in, {wo[i].x, wo[i].y, wo[i].z, axis[i].x, axis[i].y, axis[i].z, alpha[i], size[i]});
     }
     const std::string body =
         "vec3 wo = vec3(uintBitsToFloat(in0[8u*i]), uintBitsToFloat(in0[8u*i+1u]), uintBitsToFloat(in0[8u*i+2u]));"
@@ -141,10 +139,9 @@ TEST_CASE("grid estimate: GLSL against C++ for point and extended lights, every 
         const float ratio = std::exp2(5.0f * rnd(i, 10));
         const float ang = 3.1415926f * rnd(i, 11);
         const glm::vec3 h = random_direction(i, 12, 0.7f);
-        const float words[] = {100.0f * rnd(i, 13), 100.0f * rnd(i, 14), fp * std::cos(ang), fp * std::sin(ang),
+        glint_test::append_words(in, {100.0f * rnd(i, 13), 100.0f * rnd(i, 14), fp * std::cos(ang), fp * std::sin(ang),
                                -fp / ratio * std::sin(ang), fp / ratio * std::cos(ang), h.x, h.y, h.z, -4.0f + 10.0f * rnd(i, 15),
-                               0.4f * rnd(i, 16)};
-        for (float f : words) in.push_back(glint_test::to_words(std::vector<float>{f})[0]);
+                               0.4f * rnd(i, 16)});
     }
     using K = glint::detail::glsl::grid_kernels<float>;
     for (int v = 0; v <= 4; ++v) {

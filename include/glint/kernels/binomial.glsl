@@ -113,13 +113,19 @@ GLINT_FN glint_binomial glint_binomial_near_end(real N, real p) {
     return (p <= real(0.5)) ? glint_binomial_pair(real(0), N) : glint_binomial_pair(N, real(0));
 }
 
-// KK25 Alg. 1, the dual-gated Gaussian, every gate evaluated: the Gaussian part is
-// N(1 + (N2 - 2) p, (N2 - 2) p (1 - p)) clamped to [1, N2 - 1] (lines 16-19). KK25 evaluates
-// line 6 with Eq. 25 (method GLINT_POW_KK25). p^N2 and (1 - p)^N2 weigh nothing for N <= 1, and
-// the quantile nothing where the gates fix the result, so neither is evaluated there.
+// KK25 Alg. 1's Gaussian part for N2 = max(N, 2): N(1 + (N2 - 2) p, (N2 - 2) p (1 - p)) clamped to
+// [1, N2 - 1] (lines 16-19).
+GLINT_FN real glint_binomial_dual_gated_gaussian(real N2, real p, real u2) {
+    real mu = real(1) + (N2 - real(2)) * p;
+    real sigma = sqrt((N2 - real(2)) * p * (real(1) - p));
+    return clamp(mu + sigma * glint_normal_quantile(u2), real(1), N2 - real(1));
+}
+
+// KK25 Alg. 1, the dual-gated Gaussian, every gate evaluated, for N >= 0 and p in [0, 1] (the
+// caller clamps). KK25 evaluates line 6 with Eq. 25 (method GLINT_POW_KK25). p^N2 and (1 - p)^N2
+// weigh nothing for N <= 1, and the quantile nothing where the gates fix the result, so neither
+// is evaluated there.
 GLINT_FN glint_binomial glint_binomial_dual_gated_evaluated(real N, real p, real u1, real u2, int method) {
-    N = max(N, real(0));
-    p = clamp(p, real(0), real(1));
     real N2 = max(real(2), N);
     real all_positive = real(0), all_negative = real(0);
     if (N > real(1)) {
@@ -127,12 +133,7 @@ GLINT_FN glint_binomial glint_binomial_dual_gated_evaluated(real N, real p, real
         all_negative = glint_pow_one_minus(p, N2, method);
     }
     glint_binomial_gates g = glint_binomial_dual_gates(N, p, u1, all_positive, all_negative);
-    real G = real(1);
-    if (g.gaussian > real(0.5)) {
-        real mu = real(1) + (N2 - real(2)) * p;
-        real sigma = sqrt((N2 - real(2)) * p * (real(1) - p));
-        G = clamp(mu + sigma * glint_normal_quantile(u2), real(1), N2 - real(1));
-    }
+    real G = (g.gaussian > real(0.5)) ? glint_binomial_dual_gated_gaussian(N2, p, u2) : real(1);
     return glint_binomial_pair(g.positive_fixed + g.gaussian * G, g.negative_fixed + g.gaussian * (N2 - G));
 }
 
@@ -145,8 +146,7 @@ GLINT_FN glint_binomial glint_binomial_dual_gated(real N, real p, real u1, real 
     bool above_all_positive = u1 * (real(1) + real(0.999) * N * (real(1) - p)) >= real(1.001);
     bool below_all_negative = (real(1) - u1 - real(1e-6)) * (real(1) + real(0.999) * N * p) >= real(1.001);
     if (N > real(2) && method != GLINT_POW_NAIVE && above_all_positive && below_all_negative) {
-        real sigma = sqrt((N - real(2)) * p * (real(1) - p));
-        real G = clamp(real(1) + (N - real(2)) * p + sigma * glint_normal_quantile(u2), real(1), N - real(1));
+        real G = glint_binomial_dual_gated_gaussian(N, p, u2);
         return glint_binomial_pair(G, N - G);
     }
     return glint_binomial_dual_gated_evaluated(N, p, u1, u2, method);
@@ -442,13 +442,13 @@ GLINT_FN glint_binomial glint_binomial_unbiased(real N, real p, real u1, real u2
         glint_binomial_gates g = glint_binomial_dual_gates(N, p, u1, p * p, (real(1) - p) * (real(1) - p));
         return glint_binomial_pair(g.positive_fixed + g.gaussian, g.negative_fixed + g.gaussian);
     }
-    real N2 = max(real(2), N);
-    glint_binomial_ends e = glint_binomial_unbiased_ends(N2, p, method);
+    // N > 2 from here.
+    glint_binomial_ends e = glint_binomial_unbiased_ends(N, p, method);
     glint_binomial_gates g = glint_binomial_dual_gates(N, p, u1, e.all_positive, e.all_negative);
     // The middle's parameters only where the gates chose the middle.
     real G = real(1);
-    if (g.gaussian > real(0.5) && N > real(2)) G = glint_binomial_unbiased_middle(glint_binomial_unbiased_middle_setup(N2, p, e), N2, u2);
-    return glint_binomial_pair(g.positive_fixed + g.gaussian * G, g.negative_fixed + g.gaussian * (N2 - G));
+    if (g.gaussian > real(0.5)) G = glint_binomial_unbiased_middle(glint_binomial_unbiased_middle_setup(N, p, e), N, u2);
+    return glint_binomial_pair(g.positive_fixed + g.gaussian * G, g.negative_fixed + g.gaussian * (N - G));
 }
 
 // ---------------------------------------------------------------------------------------------

@@ -92,6 +92,34 @@ TEST_CASE("lattice: weights are non-negative, sum to 1, and are continuous acros
     CHECK(worst_jump < 100);
 }
 
+TEST_CASE("lattice rotations: cos and sin of bin pi / 2^(level + 1) from the table are the correctly rounded values") {
+    // Every rotation of the lattice (levels 0..4, 2^(level + 1) bins each). The reference is long
+    // double cos and sin of the long double angle, rounded once to float and to double: the table
+    // must give exactly those in float, and within 1 ulp in double (the long double angle is
+    // itself rounded, 2^-64 relative).
+    using KD = glint::detail::glsl::grid_kernels<double>;
+    int checked = 0, float_differ = 0, double_far = 0;
+    for (int level = 0; level <= 4; ++level)
+        for (int bin = 0; bin < (2 << level); ++bin) {
+            const long double angle = static_cast<long double>(bin) * 3.14159265358979323846264338327950288L / static_cast<long double>(2 << level);
+            // cos(pi / 2) is exactly 0; the long double angle's rounding leaves -2.5e-20 there.
+            auto exact = [](long double x) { return std::fabs(x) < 1e-18L ? 0.0L : x; };
+            const long double c_ref = exact(std::cos(angle)), s_ref = exact(std::sin(angle));
+            const glm::vec2 f = K::glint_lattice_rotation(level, bin);
+            const glm::dvec2 d = KD::glint_lattice_rotation(level, bin);
+            float_differ += (f.x != static_cast<float>(c_ref)) + (f.y != static_cast<float>(s_ref));
+            for (int c = 0; c < 2; ++c) {
+                const double ref = static_cast<double>(c == 0 ? c_ref : s_ref);
+                const double ulp = std::nextafter(std::fabs(ref), 2.0) - std::fabs(ref);
+                double_far += std::fabs(d[c] - ref) > ulp;
+            }
+            ++checked;
+        }
+    CHECK(checked == 62);
+    CHECK(float_differ == 0);
+    CHECK(double_far == 0);
+}
+
 TEST_CASE("triangle grid: barycentrics reproduce the point (so interpolation is continuous across edges)") {
     double worst = 0;
     for (std::uint32_t i = 0; i < 100000; ++i) {

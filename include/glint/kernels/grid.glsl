@@ -42,12 +42,25 @@ GLINT_CONST(int) GLINT_MAX_RATIO_LEVEL = 4;  // aspect ratios are clamped to 2^4
 GLINT_CONST(real) GLINT_MIN_LOD = real(-24);
 GLINT_CONST(real) GLINT_MAX_LOD = real(24);
 
+// Plain arrays, not vec4: a vector indexed in a loop costs a switch per access in C++.
 struct glint_lattice {
-    vec4 weight;
-    ivec4 lod;
-    ivec4 level;
-    ivec4 bin;
+    real weight[4];
+    int lod[4];
+    int level[4];
+    int bin[4];
 };
+
+GLINT_FN glint_lattice glint_lattice_points(vec4 weight, ivec4 lod, ivec4 level, ivec4 bin) {
+    glint_lattice o;
+    weight = max(weight, vec4(real(0)));
+    for (int i = 0; i < 4; ++i) {  // constant indices once unrolled
+        o.weight[i] = weight[i];
+        o.lod[i] = lod[i];
+        o.level[i] = level[i];
+        o.bin[i] = bin[i];
+    }
+    return o;
+}
 
 // The four lattice points around a footprint and their weights (sum 1, continuous in the
 // footprint). In the (ratio, angle) plane, the strip between levels R0 and R0 + 1 is
@@ -101,32 +114,53 @@ GLINT_FN glint_lattice glint_footprint_lattice(glint_footprint f, real lod_scale
     if (key.y > key.z) { ivec2 s = ivec2(key.y, key.z); key.y = s.y; key.z = s.x; real b = bary.y; bary.y = bary.z; bary.z = b; }
     if (key.x > key.y) { ivec2 s = ivec2(key.x, key.y); key.x = s.y; key.y = s.x; real b = bary.x; bary.x = bary.y; bary.y = b; }
     // Prism split: v1 < v2 < v3 at L0 (unprimed) and L0 + 1 (primed).
-    glint_lattice o;
     int L0 = int(l0);
-    if (tl <= bary.x) {  // v1, v2, v3, v1'
-        o.weight = vec4(bary.x - tl, bary.y, bary.z, tl);
-        o.lod = ivec4(L0, L0, L0, L0 + 1);
-        o.level = ivec4(key.x / 1024, key.y / 1024, key.z / 1024, key.x / 1024);
-        o.bin = ivec4(key.x & 1023, key.y & 1023, key.z & 1023, key.x & 1023);
-    } else if (tl <= bary.x + bary.y) {  // v1', v2, v3, v2'
-        o.weight = vec4(bary.x, bary.x + bary.y - tl, bary.z, tl - bary.x);
-        o.lod = ivec4(L0 + 1, L0, L0, L0 + 1);
-        o.level = ivec4(key.x / 1024, key.y / 1024, key.z / 1024, key.y / 1024);
-        o.bin = ivec4(key.x & 1023, key.y & 1023, key.z & 1023, key.y & 1023);
-    } else {  // v1', v2', v3, v3'
-        o.weight = vec4(bary.x, bary.y, real(1) - tl, tl - bary.x - bary.y);
-        o.lod = ivec4(L0 + 1, L0 + 1, L0, L0 + 1);
-        o.level = ivec4(key.x / 1024, key.y / 1024, key.z / 1024, key.z / 1024);
-        o.bin = ivec4(key.x & 1023, key.y & 1023, key.z & 1023, key.z & 1023);
+    ivec3 level = key / 1024;
+    ivec3 bin = key & 1023;
+    if (tl <= bary.x)  // v1, v2, v3, v1'
+        return glint_lattice_points(vec4(bary.x - tl, bary.y, bary.z, tl), ivec4(L0, L0, L0, L0 + 1),
+                                    ivec4(level, level.x), ivec4(bin, bin.x));
+    if (tl <= bary.x + bary.y)  // v1', v2, v3, v2'
+        return glint_lattice_points(vec4(bary.x, bary.x + bary.y - tl, bary.z, tl - bary.x), ivec4(L0 + 1, L0, L0, L0 + 1),
+                                    ivec4(level, level.y), ivec4(bin, bin.y));
+    // v1', v2', v3, v3'
+    return glint_lattice_points(vec4(bary.x, bary.y, real(1) - tl, tl - bary.x - bary.y), ivec4(L0 + 1, L0 + 1, L0, L0 + 1),
+                                ivec4(level, level.z), ivec4(bin, bin.z));
+}
+
+// 2^n for |n| <= 30, exact, without a libm call (ldexp and exp2 cost one each in C++).
+GLINT_FN real glint_exp2_int(int n) {
+    return (n >= 0) ? real(1 << n) : real(1) / real(1 << (-n));
+}
+
+// cos and sin of a lattice rotation, bin * pi / 2^(level + 1) = k pi / 32 (level <= 4), from
+// the correctly rounded values of cos(j pi / 32), j = 0..8 (mpmath, 22 digits) and the
+// symmetries cos(pi/2 - x) = sin x, cos(x + pi/2) = -sin x: exact to the last bit, and without
+// the libm calls, which cost about a tenth of a point-light estimate.
+GLINT_FN vec2 glint_lattice_rotation(int level, int bin) {
+    int k = (bin << (GLINT_MAX_RATIO_LEVEL - level)) & 31;
+    int m = k & 15;
+    int j = min(m, 16 - m);
+    real c = real(1), s = real(0);
+    switch (j) {
+        case 1: c = real(0.9951847266721968862448); s = real(0.0980171403295606019942); break;
+        case 2: c = real(0.9807852804032304491262); s = real(0.1950903220161282678483); break;
+        case 3: c = real(0.9569403357322088649358); s = real(0.2902846772544623676362); break;
+        case 4: c = real(0.9238795325112867561282); s = real(0.3826834323650897717285); break;
+        case 5: c = real(0.8819212643483550297128); s = real(0.4713967368259976485564); break;
+        case 6: c = real(0.8314696123025452370788); s = real(0.5555702330196022247428); break;
+        case 7: c = real(0.7730104533627369608109); s = real(0.6343932841636454982152); break;
+        case 8: c = real(0.7071067811865475244008); s = real(0.7071067811865475244008); break;
+        default: break;
     }
-    o.weight = max(o.weight, vec4(real(0)));
-    return o;
+    vec2 r = (m > 8) ? vec2(s, c) : vec2(c, s);    // m pi / 32 in [0, pi/2)
+    return (k >= 16) ? vec2(-r.y, r.x) : r;         // plus pi/2
 }
 
 // A triangle of the skewed (equilateral, side 1) grid containing q, and q's barycentrics.
 struct glint_triangle {
     ivec2 vertex[3];
-    vec3 weight;
+    real weight[3];
 };
 
 GLINT_FN glint_triangle glint_triangle_grid(vec2 q) {
@@ -140,12 +174,16 @@ GLINT_FN glint_triangle glint_triangle_grid(vec2 q) {
         t.vertex[0] = base;
         t.vertex[1] = base + ivec2(1, 0);
         t.vertex[2] = base + ivec2(0, 1);
-        t.weight = vec3(real(1) - f.x - f.y, f.x, f.y);
+        t.weight[0] = real(1) - f.x - f.y;
+        t.weight[1] = f.x;
+        t.weight[2] = f.y;
     } else {
         t.vertex[0] = base + ivec2(1, 1);
         t.vertex[1] = base + ivec2(0, 1);
         t.vertex[2] = base + ivec2(1, 0);
-        t.weight = vec3(f.x + f.y - real(1), real(1) - f.x, real(1) - f.y);
+        t.weight[0] = f.x + f.y - real(1);
+        t.weight[1] = real(1) - f.x;
+        t.weight[2] = real(1) - f.y;
     }
     return t;
 }
@@ -216,11 +254,10 @@ GLINT_FN glint_grid_vertices glint_footprint_vertices(vec2 uv, glint_footprint f
     for (int l = 0; l < 4; ++l) {
         real wl = lat.weight[l];
         if (!(wl > real(0))) continue;
-        real cell = exp2(real(lat.lod[l]));
-        real angle = real(lat.bin[l]) * GLINT_PI / real(2 << lat.level[l]);
-        real ca = cos(angle), sa = sin(angle);
-        vec2 r = vec2(ca * uv.x + sa * uv.y, -sa * uv.x + ca * uv.y);
-        glint_triangle tri = glint_triangle_grid(vec2(r.x / (cell * exp2(real(lat.level[l]))), r.y / cell));
+        vec2 rot = glint_lattice_rotation(lat.level[l], lat.bin[l]);
+        vec2 r = vec2(rot.x * uv.x + rot.y * uv.y, -rot.y * uv.x + rot.x * uv.y);
+        // Cells 2^lod by 2^(lod + level): exact power-of-two scalings.
+        glint_triangle tri = glint_triangle_grid(vec2(r.x * glint_exp2_int(-lat.lod[l] - lat.level[l]), r.y * glint_exp2_int(-lat.lod[l])));
         uint lattice_key = (uint(lat.lod[l] + 64) | (uint(lat.level[l]) << 8u) | (uint(lat.bin[l]) << 12u)) ^ g.seed;
         for (int t = 0; t < 3; ++t) {
             real wt = tri.weight[t];
@@ -243,9 +280,17 @@ GLINT_FN glint_grid_vertices glint_footprint_vertices(vec2 uv, glint_footprint f
 // result: its gates give n >= 1 with probability P(n >= 1) <= max(N, 2) p, computed to within
 // 5e-6 absolute (docs/pow_one_minus.csv), and n >= 1 exactly when u1 falls below it. Sparse glints
 // skip most draws this way.
+GLINT_FN bool glint_skip_test_applies(glint_grid_params g) {
+    return g.variant == GLINT_BINOMIAL_UNBIASED && g.pow_method == GLINT_POW_LOG1P;
+}
+
+// The bound itself, for loops that hoist glint_skip_test_applies and max(N, 2).
+GLINT_FN bool glint_surely_no_success_at(real max_N_2, real p, real u1) {
+    return u1 >= max_N_2 * p * real(1.0001) + real(1e-5);
+}
+
 GLINT_FN bool glint_surely_no_success(glint_grid_params g, real N, real p, real u1) {
-    return g.variant == GLINT_BINOMIAL_UNBIASED && g.pow_method == GLINT_POW_LOG1P &&
-           u1 >= max(N, real(2)) * p * real(1.0001) + real(1e-5);
+    return glint_skip_test_applies(g) && glint_surely_no_success_at(max(N, real(2)), p, u1);
 }
 
 // N = density x footprint area, finite in float.
@@ -285,15 +330,37 @@ GLINT_FN glint_grid_estimate glint_grid_sample(vec2 uv, vec2 duvdx, vec2 duvdy, 
     }
     if (!(N > real(1e-30))) return o;  // no footprint, no microfacets
     glint_grid_vertices v = glint_footprint_vertices(uv, f, N, g);
+    // The slope corners that can reflect, in plain arrays (a vector indexed in a loop costs a
+    // switch per access in C++), and the skip test's constant part, hoisted out of the loops.
+    int corners = 0;
+    real corner_m[4];
+    real corner_p[4];
+    uint corner_x[4];
+    uint corner_y[4];
+    for (int j = 0; j < 4; ++j) {
+        corner_m[j] = real(0);
+        corner_p[j] = real(0);
+        corner_x[j] = 0u;
+        corner_y[j] = 0u;
+    }
+    for (int j = 0; j < 4; ++j) {
+        if (!(mu[j] > real(0)) || !(p[j] > real(0))) continue;
+        corner_m[corners] = mu[j];
+        corner_p[corners] = p[j];
+        corner_x[corners] = uint(sbase.x + (j & 1));
+        corner_y[corners] = uint(sbase.y + (j >> 1));
+        ++corners;
+    }
+    bool skip_test = glint_skip_test_applies(g);
     for (int i = 0; i < v.count; ++i) {
-        for (int j = 0; j < 4; ++j) {
-            if (!(mu[j] > real(0)) || !(p[j] > real(0))) continue;
-            ivec2 c = sbase + ivec2(j & 1, j >> 1);
-            uvec3 hs = glint_pcg3d(uvec3(v.hash[i].x ^ uint(c.x), v.hash[i].y ^ uint(c.y), v.hash[i].z));
+        real n = N * v.share[i];
+        real skip_scale = max(n, real(2));
+        for (int j = 0; j < corners; ++j) {
+            uvec3 hs = glint_pcg3d(uvec3(v.hash[i].x ^ corner_x[j], v.hash[i].y ^ corner_y[j], v.hash[i].z));
             real u1 = glint_open_unit_from_bits(hs.x);
-            if (glint_surely_no_success(g, N * v.share[i], p[j], u1)) continue;
-            glint_binomial b = glint_binomial_variant(g.variant, N * v.share[i], p[j], u1, glint_open_unit_from_bits(hs.y), g.pow_method);
-            o.value += v.weight[i] * mu[j] * b.positive / N;  // the draw itself carries w_L
+            if (skip_test && glint_surely_no_success_at(skip_scale, corner_p[j], u1)) continue;
+            glint_binomial b = glint_binomial_variant(g.variant, n, corner_p[j], u1, glint_open_unit_from_bits(hs.y), g.pow_method);
+            o.value += v.weight[i] * corner_m[j] * b.positive / N;  // the draw itself carries w_L
             ++o.draws;
         }
     }

@@ -138,3 +138,33 @@ TEST_CASE("the shortcuts are taken where they should be") {
     CHECK(e.all_negative == 0);
     CHECK(e.any_near == 1);
 }
+
+TEST_CASE("the mean-preserving sampler with a cache gives exactly the uncached result, and reuses its setup") {
+    // Runs of draws at one (N, p), as the grid's triangle vertices make them, then a neighbour
+    // that differs in p only (N-major order) or in N only (p-major order): a cache that kept the
+    // wrong parameters would show in the counts. Grid N and p, all methods, float.
+    const std::vector<double> ns = gt::binomial_grid_n(), ps = gt::binomial_grid_p();
+    long checked = 0, differ = 0, reused = 0;
+    for (int method = 0; method <= 2; ++method)
+        for (int order = 0; order < 2; ++order) {
+            auto cache = K<float>::glint_binomial_empty_cache();
+            std::uint32_t draw = 0;
+            for (std::size_t a = 0; a < (order == 0 ? ns.size() : ps.size()); ++a)
+                for (std::size_t b = 0; b < (order == 0 ? ps.size() : ns.size()); ++b) {
+                    const float N = static_cast<float>(order == 0 ? ns[a] : ns[b]), p = static_cast<float>(order == 0 ? ps[b] : ps[a]);
+                    for (int run = 0; run < 3; ++run, ++draw) {
+                        const glm::uvec3 h = glint::pcg3d(glm::uvec3(draw, static_cast<std::uint32_t>(method), 11u));
+                        const float u1 = glint::open_unit_from_bits<float>(h.x), u2 = glint::open_unit_from_bits<float>(h.y);
+                        const bool warm = cache.state == 2 && cache.N == N && cache.p == p;
+                        const auto c = K<float>::glint_binomial_unbiased_cached(N, p, u1, u2, method, cache);
+                        const auto d = K<float>::glint_binomial_unbiased(N, p, u1, u2, method);
+                        reused += warm;
+                        differ += !(c.positive == d.positive && c.negative == d.negative);
+                        ++checked;
+                    }
+                }
+        }
+    MESSAGE(checked << " draws, " << reused << " from a warm cache, " << differ << " differ from the uncached sampler");
+    CHECK(reused > checked / 10);
+    CHECK(differ == 0);
+}

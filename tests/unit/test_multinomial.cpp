@@ -75,3 +75,25 @@ TEST_CASE("bad probabilities are tamed: negative as 0, a sum above 1 scaled down
     const auto d = glint::multinomial<8>(1e16f, std::array<float, 8>{}, glm::uvec3(4u, 5u, 6u));
     CHECK(d.rest == 1e16f);
 }
+
+TEST_CASE("a root cache gives exactly the uncached counts (runs of three draws at one N, as the IBL grid makes them)") {
+    using MK = glint::detail::glsl::multinomial_kernels<float>;
+    MK::glint_multinomial_probabilities probs;
+    for (int k = 0; k < 8; ++k) probs.p[k] = 0.03f * static_cast<float>(k + 1);
+    long checked = 0, differ = 0;
+    auto cache = MK::glint_binomial_empty_cache();
+    for (float N : {2.5f, 3.0f, 7.0f, 14.0f, 40.0f, 1e3f, 1e6f})
+        for (int K : {3, 4, 7, 8})
+            for (std::uint32_t run = 0; run < 3; ++run) {
+                const glm::uvec3 seed(run, static_cast<std::uint32_t>(K), 0x51u);
+                const auto a = MK::glint_multinomial_cached(N, probs, K, seed, MK::GLINT_BINOMIAL_UNBIASED, MK::GLINT_POW_LOG1P, cache);
+                const auto b = MK::glint_multinomial(N, probs, K, seed, MK::GLINT_BINOMIAL_UNBIASED, MK::GLINT_POW_LOG1P);
+                bool same = a.rest == b.rest;
+                for (int k = 0; k < 8; ++k) same = same && a.count[k] == b.count[k];
+                differ += !same;
+                ++checked;
+            }
+    MESSAGE(checked << " draws, " << differ << " differ");
+    CHECK(checked == 84);
+    CHECK(differ == 0);
+}

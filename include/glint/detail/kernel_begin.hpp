@@ -24,6 +24,8 @@ using namespace glm;  // NOLINT: confined to glint::detail::glsl
 #define GLINT_FN static
 // An out-parameter (in GLSL: `out T`).
 #define GLINT_OUT(T) T&
+// An in-out parameter (in GLSL: `inout T`).
+#define GLINT_INOUT(T) T&
 // An expression the compiler must evaluate as written (in GLSL: `precise`). C++ needs nothing:
 // the tests build with -ffp-contract=off and without -ffast-math.
 #define GLINT_PRECISE

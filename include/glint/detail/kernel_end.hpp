@@ -2,6 +2,7 @@
 // Removes every macro kernel_begin.hpp defined.
 #undef GLINT_FN
 #undef GLINT_OUT
+#undef GLINT_INOUT
 #undef GLINT_CONST
 #undef GLINT_PRECISE
 #undef GLINT_KERNEL_TYPES

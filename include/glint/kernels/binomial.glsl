@@ -420,6 +420,22 @@ GLINT_FN real glint_binomial_unbiased_middle(glint_binomial_middle q, real N2, r
     return (q.lower > real(0.5)) ? real(1) + offset : (N2 - real(1)) - offset;
 }
 
+// The mean-preserving sampler for N <= 2 (the caller clamps N and p): KK25 Alg. 1's gates alone,
+// exact, without a transcendental.
+GLINT_FN glint_binomial glint_binomial_unbiased_small(real N, real p, real u1) {
+    if (N <= real(1)) {
+        // At most one outcome (KK25 Fig. 4): Alg. 1's gates with p^N2 and (1 - p)^N2 weighted by 0
+        // reduce to two comparisons.
+        real weight_1 = max(real(0), real(1) - abs(real(1) - N));
+        real positive = (u1 < weight_1 * p) ? real(1) : real(0);
+        real negative = ((real(1) <= u1) ? real(1) : real(0)) + ((real(1) - weight_1 * (real(1) - p) <= u1) ? real(1) : real(0));
+        return glint_binomial_pair(positive, negative);
+    }
+    // The middle is the single count 1; the gates decide, from the exact squares.
+    glint_binomial_gates g = glint_binomial_dual_gates(N, p, u1, p * p, (real(1) - p) * (real(1) - p));
+    return glint_binomial_pair(g.positive_fixed + g.gaussian, g.negative_fixed + g.gaussian);
+}
+
 // The mean-preserving dual-gated sampler: KK25 Alg. 1's gates (exact for N <= 2), and for N > 2
 // a middle part whose mean is E[n | 1 <= n <= N - 1] exactly and whose variance matches the
 // binomial's on that event (glint/binomial.hpp derives it). With the same result as the
@@ -429,25 +445,69 @@ GLINT_FN glint_binomial glint_binomial_unbiased(real N, real p, real u1, real u2
     N = clamp(N, real(0), GLINT_BINOMIAL_MAX_N);
     p = clamp(p, real(0), real(1));
     if (glint_binomial_surely_near_end(N, p, u1, method)) return glint_binomial_near_end(N, p);
-    if (N <= real(1)) {
-        // At most one outcome (KK25 Fig. 4): Alg. 1's gates with p^N2 and (1 - p)^N2 weighted by 0
-        // reduce to two comparisons.
-        real weight_1 = max(real(0), real(1) - abs(real(1) - N));
-        real positive = (u1 < weight_1 * p) ? real(1) : real(0);
-        real negative = ((real(1) <= u1) ? real(1) : real(0)) + ((real(1) - weight_1 * (real(1) - p) <= u1) ? real(1) : real(0));
-        return glint_binomial_pair(positive, negative);
-    }
-    if (N <= real(2)) {
-        // Alg. 1's gates alone decide (the middle is the single count 1), from the exact squares.
-        glint_binomial_gates g = glint_binomial_dual_gates(N, p, u1, p * p, (real(1) - p) * (real(1) - p));
-        return glint_binomial_pair(g.positive_fixed + g.gaussian, g.negative_fixed + g.gaussian);
-    }
-    // N > 2 from here.
+    if (N <= real(2)) return glint_binomial_unbiased_small(N, p, u1);
     glint_binomial_ends e = glint_binomial_unbiased_ends(N, p, method);
     glint_binomial_gates g = glint_binomial_dual_gates(N, p, u1, e.all_positive, e.all_negative);
     // The middle's parameters only where the gates chose the middle.
     real G = real(1);
     if (g.gaussian > real(0.5)) G = glint_binomial_unbiased_middle(glint_binomial_unbiased_middle_setup(N, p, e), N, u2);
+    return glint_binomial_pair(g.positive_fixed + g.gaussian * G, g.negative_fixed + g.gaussian * (N - G));
+}
+
+// The mean-preserving sampler's parameters at one (N, p), kept between draws that share them (the
+// three triangle vertices of a grid lattice point draw with the same N and p): the ends once
+// evaluated, the middle once set up. One cache serves one `method`.
+struct glint_binomial_cache {
+    real N;     // N and p as clamped, valid where state > 0
+    real p;
+    int state;  // 0: empty; 1: the ends; 2: the ends and the middle
+    glint_binomial_ends ends;
+    glint_binomial_middle middle;
+};
+
+GLINT_FN glint_binomial_cache glint_binomial_empty_cache() {
+    glint_binomial_cache c;
+    c.N = real(0);
+    c.p = real(0);
+    c.state = 0;
+    c.ends.all_positive = real(0);
+    c.ends.all_negative = real(0);
+    c.ends.any_near = real(0);
+    c.ends.lower = real(0);
+    c.middle.all_positive = real(0);
+    c.middle.all_negative = real(0);
+    c.middle.lower = real(0);
+    c.middle.t = real(0);
+    c.middle.sigma = real(0);
+    c.middle.span = real(0);
+    c.middle.far_scale = real(0);
+    c.middle.two_point = real(0);
+    c.middle.center = real(0);
+    return c;
+}
+
+// glint_binomial_unbiased, reusing the ends and the middle's parameters where N and p are those of
+// the cache's last draw with N > 2: the same result, with one setup for draws that share (N, p).
+GLINT_FN glint_binomial glint_binomial_unbiased_cached(real N, real p, real u1, real u2, int method, GLINT_INOUT(glint_binomial_cache) cache) {
+    N = clamp(N, real(0), GLINT_BINOMIAL_MAX_N);
+    p = clamp(p, real(0), real(1));
+    if (glint_binomial_surely_near_end(N, p, u1, method)) return glint_binomial_near_end(N, p);
+    if (N <= real(2)) return glint_binomial_unbiased_small(N, p, u1);
+    if (!(cache.state > 0 && cache.N == N && cache.p == p)) {
+        cache.N = N;
+        cache.p = p;
+        cache.ends = glint_binomial_unbiased_ends(N, p, method);
+        cache.state = 1;
+    }
+    glint_binomial_gates g = glint_binomial_dual_gates(N, p, u1, cache.ends.all_positive, cache.ends.all_negative);
+    real G = real(1);
+    if (g.gaussian > real(0.5)) {
+        if (cache.state < 2) {
+            cache.middle = glint_binomial_unbiased_middle_setup(N, p, cache.ends);
+            cache.state = 2;
+        }
+        G = glint_binomial_unbiased_middle(cache.middle, N, u2);
+    }
     return glint_binomial_pair(g.positive_fixed + g.gaussian * G, g.negative_fixed + g.gaussian * (N - G));
 }
 

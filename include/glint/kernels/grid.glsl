@@ -352,6 +352,10 @@ GLINT_FN glint_grid_estimate glint_grid_sample(vec2 uv, vec2 duvdx, vec2 duvdy, 
         ++corners;
     }
     bool skip_test = glint_skip_test_applies(g);
+    // The three triangle vertices of a lattice point draw with the same N w_L (unless the
+    // log-normal factor is on) and p_j: the mean-preserving sampler sets up once per corner for them.
+    glint_binomial_cache cache[4];
+    for (int j = 0; j < 4; ++j) cache[j] = glint_binomial_empty_cache();
     for (int i = 0; i < v.count; ++i) {
         real n = N * v.share[i];
         real skip_scale = max(n, real(2));
@@ -359,7 +363,10 @@ GLINT_FN glint_grid_estimate glint_grid_sample(vec2 uv, vec2 duvdx, vec2 duvdy, 
             uvec3 hs = glint_pcg3d(uvec3(v.hash[i].x ^ corner_x[j], v.hash[i].y ^ corner_y[j], v.hash[i].z));
             real u1 = glint_open_unit_from_bits(hs.x);
             if (skip_test && glint_surely_no_success_at(skip_scale, corner_p[j], u1)) continue;
-            glint_binomial b = glint_binomial_variant(g.variant, n, corner_p[j], u1, glint_open_unit_from_bits(hs.y), g.pow_method);
+            real u2 = glint_open_unit_from_bits(hs.y);
+            glint_binomial b = (g.variant == GLINT_BINOMIAL_UNBIASED)
+                                   ? glint_binomial_unbiased_cached(n, corner_p[j], u1, u2, g.pow_method, cache[j])
+                                   : glint_binomial_variant(g.variant, n, corner_p[j], u1, u2, g.pow_method);
             o.value += v.weight[i] * corner_m[j] * b.positive / N;  // the draw itself carries w_L
             ++o.draws;
         }

@@ -83,11 +83,13 @@ GLINT_FN glint_ibl_shares glint_ibl_level_shares(vec2 uv, glint_footprint f, rea
     glint_grid_vertices v = glint_footprint_vertices(uv, f, N, g);
     real lit_total = real(0);
     for (int k = 0; k < 8; ++k) lit_total += lit.p[k];
+    // The triangle vertices of a lattice point share the root's N and p (glint_grid_sample).
+    glint_binomial_cache root_cache = glint_binomial_empty_cache();
     for (int i = 0; i < v.count; ++i) {
         // The multinomial's root draws the lit levels against the rest with these uniforms: if it
         // surely draws none, every count is 0 (glint_surely_no_success).
         if (glint_surely_no_success(g, N * v.share[i], min(lit_total, real(1)), glint_multinomial_uniforms(v.hash[i], 0).x)) continue;
-        glint_multinomial_counts c = glint_multinomial(N * v.share[i], lit, K - 1, v.hash[i], g.variant, g.pow_method);
+        glint_multinomial_counts c = glint_multinomial_cached(N * v.share[i], lit, K - 1, v.hash[i], g.variant, g.pow_method, root_cache);
         for (int k = 0; k < 7; ++k) o.share[k + 1] += v.weight[i] * c.count[k] / N;
         o.draws += K - 1;
     }

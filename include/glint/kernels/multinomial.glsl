@@ -30,9 +30,11 @@ GLINT_FN vec2 glint_multinomial_uniforms(uvec3 seed, int node) {
 
 // N trials over K bins (K clamped to 2..8; probabilities clamped to >= 0 and scaled down if
 // they sum to more than 1). `variant` is a GLINT_BINOMIAL_* code, `method` a GLINT_POW_* code,
-// `seed` any three words (a hash of the pixel, the grid vertex and the frame).
-GLINT_FN glint_multinomial_counts glint_multinomial(real N, glint_multinomial_probabilities probs, int K, uvec3 seed,
-                                                   int variant, int method) {
+// `seed` any three words (a hash of the pixel, the grid vertex and the frame). With the
+// mean-preserving variant the root draw keeps its parameters in `root_cache`, for the next call
+// with the same N and probabilities (the same counts as without).
+GLINT_FN glint_multinomial_counts glint_multinomial_cached(real N, glint_multinomial_probabilities probs, int K, uvec3 seed,
+                                                          int variant, int method, GLINT_INOUT(glint_binomial_cache) root_cache) {
     K = clamp(K, 2, 8);
     N = max(N, real(0));
     real total = real(0);
@@ -48,7 +50,8 @@ GLINT_FN glint_multinomial_counts glint_multinomial(real N, glint_multinomial_pr
     for (int k = 0; k < 8; ++k) result.count[k] = real(0);
     // Root: the K bins against the rest.
     vec2 u = glint_multinomial_uniforms(seed, 0);
-    glint_binomial root = glint_binomial_variant(variant, N, total, u.x, u.y, method);
+    glint_binomial root = (variant == GLINT_BINOMIAL_UNBIASED) ? glint_binomial_unbiased_cached(N, total, u.x, u.y, method, root_cache)
+                                                               : glint_binomial_variant(variant, N, total, u.x, u.y, method);
     result.rest = root.negative;
 
     // Breadth-first over the inner nodes [lo, hi) of the bins, at most K - 1 = 7 of them; a node's
@@ -101,4 +104,10 @@ GLINT_FN glint_multinomial_counts glint_multinomial(real N, glint_multinomial_pr
         }
     }
     return result;
+}
+
+GLINT_FN glint_multinomial_counts glint_multinomial(real N, glint_multinomial_probabilities probs, int K, uvec3 seed,
+                                                   int variant, int method) {
+    glint_binomial_cache root_cache = glint_binomial_empty_cache();
+    return glint_multinomial_cached(N, probs, K, seed, variant, method, root_cache);
 }

@@ -6,6 +6,7 @@
 #define real float
 #define GLINT_FN
 #define GLINT_OUT(T) out T
+#define GLINT_INOUT(T) inout T
 #define GLINT_CONST(T) const T
 #define GLINT_PRECISE precise
 // True in the C++ double instantiation; GLSL computes in float.

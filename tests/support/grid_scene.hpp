@@ -31,6 +31,7 @@ struct grid_scene {
     float ratio = 1.0f;        // major / minor
     glint::binomial_variant variant = glint::binomial_variant::unbiased;
     float light_size = 0.0f;   // cone radius (rad) or rectangle side; 0: the kind's default
+    float slope_cell = glint::grid_params<float>{}.slope_cell;
 
     glm::vec3 wo = glm::normalize(glm::vec3(0.55f, 0.2f, 0.8f));
     glm::vec3 wi{}, h{};
@@ -67,6 +68,7 @@ struct grid_scene {
         g.log_density = log_density;
         g.variant = variant;
         g.smooth_tolerance = 0;  // always sample: the tests look at the glints themselves
+        g.slope_cell = slope_cell;
         g.seed = seed;
         return g;
     }

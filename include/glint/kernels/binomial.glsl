@@ -488,6 +488,8 @@ GLINT_FN glint_binomial_cache glint_binomial_empty_cache() {
 
 // glint_binomial_unbiased, reusing the ends and the middle's parameters where N and p are those of
 // the cache's last draw with N > 2: the same result, with one setup for draws that share (N, p).
+// (glint_binomial_unbiased does not call this with an empty cache: that made it 1.35x slower in
+// the median over the binomial grid, the cache's stores not optimised away.)
 GLINT_FN glint_binomial glint_binomial_unbiased_cached(real N, real p, real u1, real u2, int method, GLINT_INOUT(glint_binomial_cache) cache) {
     N = clamp(N, real(0), GLINT_BINOMIAL_MAX_N);
     p = clamp(p, real(0), real(1));

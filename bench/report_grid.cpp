@@ -21,37 +21,6 @@ namespace glint_report {
 
 namespace {
 
-// Mean of R / E[R] over seeds for a few scenes; returns the largest |mean - 1| and its standard
-// error.
-struct bias_result {
-    double worst = 0, se = 0;
-    std::string where;
-};
-
-bias_result grid_bias(glint::binomial_variant v) {
-    bias_result out;
-    for (glint_test::light_kind k : {glint_test::light_kind::point, glint_test::light_kind::sphere, glint_test::light_kind::rect})
-        for (float logd : {0.0f, 2.0f, 4.0f}) {
-            glint_test::grid_scene s;
-            s.kind = k, s.alpha = 0.25f, s.log_density = logd, s.footprint = 3.0f, s.variant = v;
-            s.prepare();
-            glm::vec2 dx, dy;
-            s.derivatives(dx, dy);
-            double sum = 0, sq = 0;
-            const int n = 6000;
-            for (int i = 0; i < n; ++i) {
-                const auto g = s.params(static_cast<std::uint32_t>(i) * 2654435761u + 17u);
-                const glm::uvec3 h = glint::pcg3d(glm::uvec3(static_cast<std::uint32_t>(i), 9u, 9u));
-                const glm::vec2 uv(glint::unit_from_bits<float>(h.x) * 97.0f, glint::unit_from_bits<float>(h.y) * 89.0f);
-                const double m = static_cast<double>(glint::modulation(glint::grid_sample(uv, dx, dy, g, s.light)));
-                sum += m, sq += m * m;
-            }
-            const double mean = sum / n, se = std::sqrt(std::max(0.0, sq / n - mean * mean) / n);
-            if (std::fabs(mean - 1) > out.worst) out.worst = std::fabs(mean - 1), out.se = se, out.where = s.describe();
-        }
-    return out;
-}
-
 // R / E[R] over seeds at one scene: its mean (must be 1), standard deviation (the glints'
 // contrast) and the fraction of footprints with any glint.
 struct glint_statistics {
@@ -77,6 +46,25 @@ glint_statistics grid_statistics(const glint_test::grid_scene& s, int n) {
     return o;
 }
 
+// The largest |mean R / E[R] - 1| over a few scenes, with its standard error.
+struct bias_result {
+    double worst = 0, se = 0;
+    std::string where;
+};
+
+bias_result grid_bias(glint::binomial_variant v) {
+    bias_result out;
+    for (glint_test::light_kind k : {glint_test::light_kind::point, glint_test::light_kind::sphere, glint_test::light_kind::rect})
+        for (float logd : {0.0f, 2.0f, 4.0f}) {
+            glint_test::grid_scene s;
+            s.kind = k, s.alpha = 0.25f, s.log_density = logd, s.footprint = 3.0f, s.variant = v;
+            s.prepare();
+            const glint_statistics st = grid_statistics(s, 6000);
+            if (std::fabs(st.mean - 1) > out.worst) out.worst = std::fabs(st.mean - 1), out.se = st.se, out.where = s.describe();
+        }
+    return out;
+}
+
 // The slope-grid cells of the study below (0.02 is grid_params' default).
 const float slope_cells[] = {0.005f, 0.01f, 0.02f, 0.04f, 0.08f};
 
@@ -85,6 +73,14 @@ glint_test::grid_scene slope_cell_scene(float cell) {
     s.kind = glint_test::light_kind::point, s.alpha = 0.25f, s.log_density = 6.0f, s.footprint = 3.0f, s.slope_cell = cell;
     s.prepare();
     return s;
+}
+
+// Times one estimate of the scene, at a new seed and position each call.
+void add_estimate_timing(const std::string& name, const glint_test::grid_scene& sc, double min_time) {
+    add(name, [sc](std::size_t i) {
+        const glm::vec2 uv(static_cast<float>(i % 997) * 0.37f, static_cast<float>(i % 991) * 0.29f);
+        benchmark::DoNotOptimize(sc.estimate(static_cast<std::uint32_t>(i), uv).value);
+    }, min_time);
 }
 
 }  // namespace
@@ -114,18 +110,9 @@ section grid_section(double min_time) {
         for (const glint_test::grid_scene* s : {&timing_scene, &point_scene}) {
             glint_test::grid_scene sc = *s;
             sc.variant = static_cast<glint::binomial_variant>(v);
-            add("grid_" + std::string(glint::name(sc.variant)) + "_" + glint_test::name(sc.kind), [sc](std::size_t i) {
-                const glm::vec2 uv(static_cast<float>(i % 997) * 0.37f, static_cast<float>(i % 991) * 0.29f);
-                benchmark::DoNotOptimize(sc.estimate(static_cast<std::uint32_t>(i), uv).value);
-            }, min_time);
+            add_estimate_timing("grid_" + std::string(glint::name(sc.variant)) + "_" + glint_test::name(sc.kind), sc, min_time);
         }
-    for (float cell : slope_cells) {
-        const glint_test::grid_scene sc = slope_cell_scene(cell);
-        add("grid_slope_" + std::to_string(cell), [sc](std::size_t i) {
-            const glm::vec2 uv(static_cast<float>(i % 997) * 0.37f, static_cast<float>(i % 991) * 0.29f);
-            benchmark::DoNotOptimize(sc.estimate(static_cast<std::uint32_t>(i), uv).value);
-        }, min_time);
-    }
+    for (float cell : slope_cells) add_estimate_timing("grid_slope_" + std::to_string(cell), slope_cell_scene(cell), min_time);
     // --- frames ---------------------------------------------------------------------------
     using namespace glint_examples;
     const int fw = 160, fh = 100;

@@ -5,22 +5,17 @@
 //                [--roughness A] [--variant NAME] [--size WxH] [--out PATH.exr]
 //
 // Bare, it renders the showcase: the sun glinting on the plane and the sphere.
-#include <algorithm>
 #include <atomic>
-#include <chrono>
-#include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <cstdlib>
-#include <stdexcept>
+#include <exception>
 #include <string>
-#include <thread>
 #include <vector>
-
-#include <glint/io/exr.hpp>
 
 #include "lights_scene.hpp"
 #include "support/cli.hpp"
-#include "support/png.hpp"
+#include "support/render.hpp"
 
 using namespace glint_examples;
 
@@ -69,15 +64,9 @@ settings parse(int argc, char** argv) {
                 if (v == glint::name(static_cast<glint::binomial_variant>(k))) s.scene.variant = static_cast<glint::binomial_variant>(k), found = true;
             if (!found) usage("unknown --variant '" + v + "'");
         } else if (a == "--size") {
-            const std::string v = value();
-            int w = 0, h = 0;
-            char x = 0;
-            if (std::sscanf(v.c_str(), "%d%c%d", &w, &x, &h) != 3 || x != 'x' || w < 1 || h < 1 || w > 16384 || h > 16384)
-                usage("--size needs WxH with 1 <= W, H <= 16384, got '" + v + "'");
-            s.scene.width = w, s.scene.height = h;
+            parse_size(a, value(), s.scene.width, s.scene.height, usage);
         } else if (a == "--out") {
-            s.out = value();
-            if (s.out.size() < 5 || s.out.substr(s.out.size() - 4) != ".exr") usage("--out must end in .exr, got '" + s.out + "'");
+            s.out = parse_exr_path(a, value(), usage);
         } else if (a == "--help" || a == "-h") {
             usage("renders a glinty sphere and plane");
         } else {
@@ -86,7 +75,6 @@ settings parse(int argc, char** argv) {
     }
     return s;
 }
-
 
 }  // namespace
 
@@ -97,42 +85,21 @@ int main(int argc, char** argv) {
     light_setup ls;
     ls.type = s.scene.light;
     std::vector<float> rgb(3 * static_cast<std::size_t>(w) * static_cast<std::size_t>(h));
-    std::atomic<int> next_row{0}, rows_done{0};
     std::atomic<std::uint64_t> draws{0};
-    const auto start = std::chrono::steady_clock::now();
-    auto work = [&]() {
+    const std::string mode = std::string(name(s.scene.light)) + " light, " + (s.scene.smooth ? "smooth" : "glints");
+    const render_timing t = render_rows(h, "glint_lights: " + mode + ", " + std::to_string(w) + "x" + std::to_string(h), [&](int y) {
         shading_counters c;
-        for (int y = next_row++; y < h; y = next_row++) {
-            for (int x = 0; x < w; ++x) {
-                const vec3 L = render_pixel(s.scene, ls, cam, x, y, c);
-                const std::size_t i = 3 * (static_cast<std::size_t>(y) * static_cast<std::size_t>(w) + static_cast<std::size_t>(x));
-                rgb[i] = L.x, rgb[i + 1] = L.y, rgb[i + 2] = L.z;
-            }
-            ++rows_done;
+        for (int x = 0; x < w; ++x) {
+            const vec3 L = render_pixel(s.scene, ls, cam, x, y, c);
+            const std::size_t i = 3 * (static_cast<std::size_t>(y) * static_cast<std::size_t>(w) + static_cast<std::size_t>(x));
+            rgb[i] = L.x, rgb[i + 1] = L.y, rgb[i + 2] = L.z;
         }
         draws += c.draws;
-    };
-    const unsigned threads = std::max(1u, std::thread::hardware_concurrency());
-    std::vector<std::thread> pool;
-    for (unsigned t = 0; t < threads; ++t) pool.emplace_back(work);
-    while (rows_done < h) {
-        std::this_thread::sleep_for(std::chrono::milliseconds(200));
-        const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-        std::fprintf(stderr, "\rglint_lights: %s light, %s, %dx%d: %3d%% (%.1f s)", name(s.scene.light), s.scene.smooth ? "smooth" : "glints",
-                     w, h, 100 * rows_done.load() / h, secs);
-    }
-    for (auto& t : pool) t.join();
-    const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    std::fprintf(stderr, "\rglint_lights: %s light, %s, %dx%d: 100%% in %.2f s on %u threads, %.1f binomial draws per pixel\n",
-                 name(s.scene.light), s.scene.smooth ? "smooth" : "glints", w, h, secs, threads,
-                 static_cast<double>(draws.load()) / (static_cast<double>(w) * h));
+    });
+    std::fprintf(stderr, "\rglint_lights: %s, %dx%d: 100%% in %.2f s on %u threads, %.1f binomial draws per pixel\n", mode.c_str(), w, h,
+                 t.seconds, t.threads, static_cast<double>(draws.load()) / (static_cast<double>(w) * h));
     try {
-        glint::io::write_exr(s.out, w, h, rgb);
-        std::vector<std::uint8_t> preview(rgb.size());
-        for (std::size_t i = 0; i < rgb.size(); ++i) preview[i] = to_srgb8(rgb[i], 1.6f);
-        const std::string png = s.out.substr(0, s.out.size() - 4) + ".png";
-        write_png(png, w, h, preview);
-        std::printf("wrote %s and %s\n", s.out.c_str(), png.c_str());
+        write_exr_and_preview(s.out, w, h, rgb, 1.6f);
     } catch (const std::exception& e) {
         std::fprintf(stderr, "glint_lights: %s\n", e.what());
         return 1;

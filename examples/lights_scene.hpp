@@ -83,11 +83,12 @@ inline vec2 uv_of_displacement(const hit& h, const vec3& disp) {
 }
 
 struct camera {
-    vec3 eye{0.0f, 1.25f, 4.2f}, target{0.0f, 0.55f, 0.0f};
+    vec3 eye, target;
     float fov_y = 0.62f;  // radians
     int width, height;
     vec3 forward, right, up;
-    camera(int w, int h) : width(w), height(h) {
+    camera(int w, int h, vec3 eye_at = vec3(0.0f, 1.25f, 4.2f), vec3 looking_at = vec3(0.0f, 0.55f, 0.0f))
+        : eye(eye_at), target(looking_at), width(w), height(h) {
         forward = glm::normalize(target - eye);
         right = glm::normalize(glm::cross(forward, vec3(0, 1, 0)));
         up = glm::cross(right, forward);
@@ -207,18 +208,24 @@ inline vec3 shade(const scene_options& opt, const light_setup& ls, const hit& h,
 }
 
 // The radiance of pixel (x, y).
+// The pixel footprint's uv derivatives at hit h of the ray through (fx, fy), by ray
+// differentials: the neighbouring pixels' rays meet the tangent plane at h.
+inline void footprint_derivatives(const camera& cam, const hit& h, float fx, float fy, vec2& duvdx, vec2& duvdy) {
+    auto on_plane = [&](const vec3& dn) {
+        const float t = glm::dot(h.p - cam.eye, h.n) / std::min(glm::dot(dn, h.n), -1e-6f);
+        return cam.eye + t * dn - h.p;
+    };
+    duvdx = uv_of_displacement(h, on_plane(cam.ray(fx + 1, fy)));
+    duvdy = uv_of_displacement(h, on_plane(cam.ray(fx, fy + 1)));
+}
+
 inline vec3 render_pixel(const scene_options& opt, const light_setup& ls, const camera& cam, int x, int y, shading_counters& counters) {
     const float fx = static_cast<float>(x) + 0.5f, fy = static_cast<float>(y) + 0.5f;
     const vec3 d = cam.ray(fx, fy);
     const hit h = intersect(cam.eye, d);
     if (!h.found) return background(d);
-    // Ray differentials: the neighbouring pixels' rays meet the tangent plane at h.
-    auto on_plane = [&](const vec3& dn) {
-        const float t = glm::dot(h.p - cam.eye, h.n) / std::min(glm::dot(dn, h.n), -1e-6f);
-        return cam.eye + t * dn - h.p;
-    };
-    const vec2 duvdx = uv_of_displacement(h, on_plane(cam.ray(fx + 1, fy)));
-    const vec2 duvdy = uv_of_displacement(h, on_plane(cam.ray(fx, fy + 1)));
+    vec2 duvdx, duvdy;
+    footprint_derivatives(cam, h, fx, fy, duvdx, duvdy);
     return shade(opt, ls, h, -d, duvdx, duvdy, counters);
 }
 

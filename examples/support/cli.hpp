@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <cstdlib>
 #include <string>
 
@@ -18,6 +19,23 @@ float parse_float(const std::string& flag, const std::string& s, float lo, float
     if (end == s.c_str() || *end != '\0' || !std::isfinite(v) || v < lo || v > hi)
         fail(flag + " needs a number in [" + std::to_string(lo) + ", " + std::to_string(hi) + "], got '" + s + "'");
     return v;
+}
+
+// WxH with 1 <= W, H <= 16384 into width and height; otherwise `fail`.
+template <class Fail>
+void parse_size(const std::string& flag, const std::string& s, int& width, int& height, Fail fail) {
+    int w = 0, h = 0;
+    char x = 0;
+    if (std::sscanf(s.c_str(), "%d%c%d", &w, &x, &h) != 3 || x != 'x' || w < 1 || h < 1 || w > 16384 || h > 16384)
+        fail(flag + " needs WxH with 1 <= W, H <= 16384, got '" + s + "'");
+    width = w, height = h;
+}
+
+// An output path, which must end in .exr (the preview goes next to it as .png); otherwise `fail`.
+template <class Fail>
+std::string parse_exr_path(const std::string& flag, const std::string& s, Fail fail) {
+    if (s.size() < 5 || s.substr(s.size() - 4) != ".exr") fail(flag + " must end in .exr, got '" + s + "'");
+    return s;
 }
 
 // Exposure, the tone curve x / (1 + x), then the sRGB transfer function, to 8 bits.

@@ -2,7 +2,7 @@
 //
 //   auto img = glint::io::read_exr("studio.exr");            // glint/io/exr.hpp
 //   glint::ibl_options o;  o.levels = 4;                      // K = 4 or 8
-//   auto env = glint::build_environment(img, o);              // levels, prefiltered maps, tables
+//   auto env = glint::build_environment(img.width, img.height, img.rgb, o);  // levels, maps, tables
 //   // per pixel (n, wo in world space, reflection r, roughness alpha, footprint uv derivatives):
 //   auto s = env.lookup(r, std::sqrt(alpha));                 // radiance RGB + the K indicators
 //   float e_rho = env.albedo(cos_o, std::sqrt(alpha)), e_d = env.visible_area(cos_o, std::sqrt(alpha));
@@ -116,13 +116,10 @@ public:
         const float f = std::clamp(sqrt_alpha, 0.0f, 1.0f) * static_cast<float>(chain_.size() - 1);
         const std::size_t m0 = std::min(static_cast<std::size_t>(f), chain_.size() - 1), m1 = std::min(m0 + 1, chain_.size() - 1);
         const float t = f - static_cast<float>(m0);
-        float a[16] = {}, b[16] = {};
-        fetch(chain_[m0], uv, a);
-        if (t > 0) fetch(chain_[m1], uv, b);
-        sample s;
-        const int C = channels();
         float v[16] = {};
-        for (int c = 0; c < C; ++c) v[c] = t > 0 ? a[c] + t * (b[c] - a[c]) : a[c];
+        add_bilinear(chain_[m0], uv, channels(), 1 - t, v);
+        if (t > 0) add_bilinear(chain_[m1], uv, channels(), t, v);
+        sample s;
         s.radiance = glm::vec3(v[0], v[1], v[2]);
         for (int k2 = 0; k2 < 8; ++k2) s.indicators.w[k2] = k2 < levels_.count ? v[3 + k2] : 0.0f;
         return s;
@@ -150,11 +147,6 @@ private:
                                       static_cast<std::size_t>(C)];
             for (int c = 0; c < C; ++c) out[c] += w * px[c];
         }
-    }
-
-    void fetch(const map& m, const glm::vec2& uv, float* out) const {
-        for (int c = 0; c < channels(); ++c) out[c] = 0;
-        add_bilinear(m, uv, channels(), 1.0f, out);
     }
 
     float table(const std::vector<float>& t, float x, float y) const {
@@ -197,8 +189,28 @@ inline void frame_of(const glm::vec3& n, glm::vec3& t, glm::vec3& b) {
     b = glm::cross(n, t);
 }
 
-// E_rho and E_D over (sqrt(cos theta_o), sqrt alpha) at texel centres (i + 1/2) / T, computed once
-// per table size.
+// The directional albedo E_rho(wo) of GGX at roughness alpha (F = 1, Smith G2): the mean of
+// G2 / G1 over S visible normals at Hammersley points.
+inline double directional_albedo(const glm::dvec3& wo, double alpha, int S) {
+    double e = 0;
+    for (int s = 0; s < S; ++s) {
+        const glm::vec2 u = hammersley(static_cast<std::uint32_t>(s), static_cast<std::uint32_t>(S));
+        const glm::dvec3 h = sample_vndf_ggx(wo, glm::dvec2(alpha), static_cast<double>(u.x), static_cast<double>(u.y));
+        const glm::dvec3 wi = 2 * glm::dot(wo, h) * h - wo;
+        const double g1 = smith_g1(ndf::ggx, wo, h, glm::dvec2(alpha));
+        if (wi.z > 0 && g1 > 0) e += smith_g2(ndf::ggx, wi, wo, h, glm::dvec2(alpha)) / g1;
+    }
+    return e / S;
+}
+
+// The visible reflecting microfacet area E_D(wo) of GGX: D_Omega over the whole upper hemisphere
+// (glint::integrated_ndf_cone, 32 pieces per edge).
+inline double visible_area(const glm::dvec3& wo, double alpha) {
+    return integrated_ndf_cone(ndf::ggx, wo, glm::dvec2(alpha), glm::dvec3(0, 0, 1), 0.5 * 3.14159265358979323846, 32);
+}
+
+// E_rho (1024 samples) and E_D over (sqrt(cos theta_o), sqrt alpha) at texel centres
+// (i + 1/2) / T, computed once per table size.
 inline const std::pair<std::vector<float>, std::vector<float>>& ibl_tables(int T) {
     static std::map<int, std::pair<std::vector<float>, std::vector<float>>> cache;
     static std::mutex lock;
@@ -210,18 +222,8 @@ inline const std::pair<std::vector<float>, std::vector<float>>& ibl_tables(int T
         for (int i = 0; i < T; ++i) {
             const double q = (i + 0.5) / T, c = q * q, sa = (j + 0.5) / T, alpha = std::max(sa * sa, 1e-4);
             const glm::dvec3 wo(std::sqrt(std::max(0.0, 1 - c * c)), 0, c);
-            double e = 0;
-            const int S = 1024;
-            for (int s = 0; s < S; ++s) {
-                const glm::vec2 u = hammersley(static_cast<std::uint32_t>(s), S);
-                const glm::dvec3 h = sample_vndf_ggx(wo, glm::dvec2(alpha), static_cast<double>(u.x), static_cast<double>(u.y));
-                const glm::dvec3 wi = 2 * glm::dot(wo, h) * h - wo;
-                const double g1 = smith_g1(ndf::ggx, wo, h, glm::dvec2(alpha));
-                if (wi.z > 0 && g1 > 0) e += smith_g2(ndf::ggx, wi, wo, h, glm::dvec2(alpha)) / g1;
-            }
-            e_rho[static_cast<std::size_t>(j * T + i)] = static_cast<float>(e / S);
-            e_d[static_cast<std::size_t>(j * T + i)] =
-                static_cast<float>(integrated_ndf_cone(ndf::ggx, wo, glm::dvec2(alpha), glm::dvec3(0, 0, 1), 0.5 * 3.14159265358979323846, 32));
+            e_rho[static_cast<std::size_t>(j * T + i)] = static_cast<float>(directional_albedo(wo, alpha, 1024));
+            e_d[static_cast<std::size_t>(j * T + i)] = static_cast<float>(visible_area(wo, alpha));
         }
     return cache.emplace(T, std::make_pair(std::move(e_rho), std::move(e_d))).first->second;
 }

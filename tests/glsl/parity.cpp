@@ -37,6 +37,9 @@ std::vector<std::uint32_t> map_words(const std::vector<std::string>& kernels, co
     std::string s = shader_header(kernels);
     s += "layout(std430, binding = 0) readonly buffer In0 { uint in0[]; };\n"
          "layout(std430, binding = 1) writeonly buffer Out { uint out0[]; };\n"
+         "float in_float(uint k) { return uintBitsToFloat(in0[k]); }\n"
+         "vec2 in_vec2(uint k) { return vec2(in_float(k), in_float(k + 1u)); }\n"
+         "vec3 in_vec3(uint k) { return vec3(in_float(k), in_float(k + 1u), in_float(k + 2u)); }\n"
          "void main() {\n"
          "  uint n = " + std::to_string(items) + "u;\n"
          "  for (uint i = gl_GlobalInvocationID.x; i < n; i += gl_NumWorkGroups.x * gl_WorkGroupSize.x) {\n" +

@@ -19,7 +19,8 @@ std::vector<std::uint32_t> map_floats(const std::vector<std::string>& kernels, c
                                       const std::vector<float>& y = {});
 
 // Runs `body` with `uint i` set to the element index and buffers `uint in0[]` (binding 0) and
-// `uint out0[]` (binding 1) of `out_words_per_item` words per item.
+// `uint out0[]` (binding 1) of `out_words_per_item` words per item. `in_float(k)`, `in_vec2(k)` and
+// `in_vec3(k)` read floats stored as words from in0 at word k.
 std::vector<std::uint32_t> map_words(const std::vector<std::string>& kernels, const std::string& body,
                                      const std::vector<std::uint32_t>& in, std::size_t items,
                                      std::size_t out_words_per_item);

@@ -55,8 +55,7 @@ TEST_CASE("binomial kernels: GLSL against C++ over the grid, 256 uniform pairs p
                                binomial_variant::dual_gated, binomial_variant::unbiased}) {
         const int method = static_cast<int>(glint::published_pow_method(v));
         const std::string body =
-            "float N = uintBitsToFloat(in0[4u*i]), p = uintBitsToFloat(in0[4u*i+1u]);"
-            " float u1 = uintBitsToFloat(in0[4u*i+2u]), u2 = uintBitsToFloat(in0[4u*i+3u]);"
+            "float N = in_float(4u*i), p = in_float(4u*i+1u), u1 = in_float(4u*i+2u), u2 = in_float(4u*i+3u);"
             " glint_binomial r = glint_binomial_variant(" + std::to_string(static_cast<int>(v)) + ", N, p, u1, u2, " +
             std::to_string(method) + ");"
             " out0[2u*i] = floatBitsToUint(r.positive); out0[2u*i+1u] = floatBitsToUint(r.negative);";
@@ -91,7 +90,7 @@ TEST_CASE("multinomial kernel: GLSL against C++, K = 4 and 8") {
         }
         std::string body = "glint_multinomial_probabilities pr;";
         for (int k = 0; k < 8; ++k) body += " pr.p[" + std::to_string(k) + "] = " + std::to_string(0.8 * (k + 1) / (K * (K + 1) / 2)) + ";";
-        body += " glint_multinomial_counts c = glint_multinomial(uintBitsToFloat(in0[i]), pr, " + std::to_string(K) +
+        body += " glint_multinomial_counts c = glint_multinomial(in_float(i), pr, " + std::to_string(K) +
                 ", uvec3(i, 7u, 1u), 4, 2);"
                 " for (int k = 0; k < 8; ++k) out0[9u*i+uint(k)] = floatBitsToUint(c.count[k]);"
                 " out0[9u*i+8u] = floatBitsToUint(c.rest);";

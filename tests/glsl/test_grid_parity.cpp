@@ -53,9 +53,7 @@ TEST_CASE("microfacet kernels: GLSL against C++ (D, Lambda, G2, VNDF, D_H, condu
         glint_test::append_words(in, {wo[i].x, wo[i].y, wo[i].z, wi[i].x, wi[i].y, wi[i].z, alpha[i].x, alpha[i].y});
     }
     const std::string body =
-        "vec3 wo = vec3(uintBitsToFloat(in0[8u*i]), uintBitsToFloat(in0[8u*i+1u]), uintBitsToFloat(in0[8u*i+2u]));"
-        " vec3 wi = vec3(uintBitsToFloat(in0[8u*i+3u]), uintBitsToFloat(in0[8u*i+4u]), uintBitsToFloat(in0[8u*i+5u]));"
-        " vec2 a = vec2(uintBitsToFloat(in0[8u*i+6u]), uintBitsToFloat(in0[8u*i+7u])); vec3 m = normalize(wo + wi);"
+        "vec3 wo = in_vec3(8u*i); vec3 wi = in_vec3(8u*i+3u); vec2 a = in_vec2(8u*i+6u); vec3 m = normalize(wo + wi);"
         " int d = int(i & 1u);"
         " out0[9u*i] = floatBitsToUint(glint_ndf(d, m, a));"
         " out0[9u*i+1u] = floatBitsToUint(glint_smith_lambda(d, wo, a));"
@@ -102,9 +100,8 @@ TEST_CASE("D_Omega kernels: GLSL against C++ for cones and rectangles") {
         glint_test::append_words(in, {wo[i].x, wo[i].y, wo[i].z, axis[i].x, axis[i].y, axis[i].z, alpha[i], size[i]});
     }
     const std::string body =
-        "vec3 wo = vec3(uintBitsToFloat(in0[8u*i]), uintBitsToFloat(in0[8u*i+1u]), uintBitsToFloat(in0[8u*i+2u]));"
-        " vec3 c = vec3(uintBitsToFloat(in0[8u*i+3u]), uintBitsToFloat(in0[8u*i+4u]), uintBitsToFloat(in0[8u*i+5u]));"
-        " float al = uintBitsToFloat(in0[8u*i+6u]); float s = uintBitsToFloat(in0[8u*i+7u]); int d = int(i & 1u);"
+        "vec3 wo = in_vec3(8u*i); vec3 c = in_vec3(8u*i+3u); float al = in_float(8u*i+6u); float s = in_float(8u*i+7u);"
+        " int d = int(i & 1u);"
         " vec2 a = vec2(al, 0.7 * al);"
         " out0[2u*i] = floatBitsToUint(glint_integrated_ndf_cone(d, wo, a, c, cos(s), sin(s), 8));"
         " vec3 e1 = normalize(cross(c, vec3(0.0, 0.2, 1.0))) * s; vec3 e2 = normalize(cross(e1, c)) * s;"
@@ -146,15 +143,12 @@ TEST_CASE("grid estimate: GLSL against C++ for point and extended lights, every 
     using K = glint::detail::glsl::grid_kernels<float>;
     for (int v = 0; v <= 4; ++v) {
         const std::string body =
-            "uint b = 11u * i; vec2 uv = vec2(uintBitsToFloat(in0[b]), uintBitsToFloat(in0[b+1u]));"
-            " vec2 dx = vec2(uintBitsToFloat(in0[b+2u]), uintBitsToFloat(in0[b+3u]));"
-            " vec2 dy = vec2(uintBitsToFloat(in0[b+4u]), uintBitsToFloat(in0[b+5u]));"
-            " vec3 h = vec3(uintBitsToFloat(in0[b+6u]), uintBitsToFloat(in0[b+7u]), uintBitsToFloat(in0[b+8u]));"
-            " glint_grid_params g; g.log_density = uintBitsToFloat(in0[b+9u]); g.density_sigma = ((i & 2u) != 0u) ? 0.3 : 0.0;"
+            "uint b = 11u * i; vec2 uv = in_vec2(b); vec2 dx = in_vec2(b+2u); vec2 dy = in_vec2(b+4u); vec3 h = in_vec3(b+6u);"
+            " glint_grid_params g; g.log_density = in_float(b+9u); g.density_sigma = ((i & 2u) != 0u) ? 0.3 : 0.0;"
             " g.lod_scale = 1.5; g.slope_cell = 0.02; g.smooth_tolerance = 0.0; g.variant = " + std::to_string(v) +
             "; g.pow_method = " + std::to_string(static_cast<int>(glint::published_pow_method(static_cast<glint::binomial_variant>(v)))) +
             "; g.seed = i * 747796405u;"
-            " glint_grid_light l; l.kind = int(i & 1u); l.p = uintBitsToFloat(in0[b+10u]); l.slope = -h.xy / h.z; l.ndf = 0;"
+            " glint_grid_light l; l.kind = int(i & 1u); l.p = in_float(b+10u); l.slope = -h.xy / h.z; l.ndf = 0;"
             " l.alpha = vec2(0.2, 0.1); l.total_area = glint_total_area(0, l.alpha);"
             " glint_grid_estimate e = glint_grid_sample(uv, dx, dy, g, l);"
             " out0[2u*i] = floatBitsToUint(e.value); out0[2u*i+1u] = floatBitsToUint(e.expected);";

@@ -58,7 +58,7 @@ TEST_CASE("ibl: equirectangular mapping, fuzzy weights and the glint estimate: G
     for (std::uint32_t i = 0; i < n; ++i)
         for (std::uint32_t k = 0; k < 12; ++k) in.push_back(rnd(i, 10 + k));
     const std::string body =
-        "uint b = 12u * i; float r[12]; for (uint k = 0u; k < 12u; ++k) r[k] = uintBitsToFloat(in0[b + k]);"
+        "uint b = 12u * i; float r[12]; for (uint k = 0u; k < 12u; ++k) r[k] = in_float(b + k);"
         " vec3 d = glint_equirect_direction(vec2(r[0], r[1])); vec2 uv = glint_equirect_uv(d);"
         " glint_ibl_levels lv; lv.count = ((i & 1u) != 0u) ? 8 : 4;"
         " for (int k = 0; k < 8; ++k) lv.radiance[k] = glint_ibl_level(k, lv.count, 0.01, 3.0e4);"

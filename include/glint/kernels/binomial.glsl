@@ -529,3 +529,11 @@ GLINT_FN glint_binomial glint_binomial_variant(int variant, real N, real p, real
     if (variant == GLINT_BINOMIAL_DUAL_GATED) return glint_binomial_dual_gated(N, p, u1, u2, method);
     return glint_binomial_unbiased(N, p, u1, u2, method);
 }
+
+// glint_binomial_variant with a cache for the mean-preserving sampler's setup (the other variants
+// have none to keep): the same result.
+GLINT_FN glint_binomial glint_binomial_variant_cached(int variant, real N, real p, real u1, real u2, int method,
+                                                     GLINT_INOUT(glint_binomial_cache) cache) {
+    if (variant == GLINT_BINOMIAL_UNBIASED) return glint_binomial_unbiased_cached(N, p, u1, u2, method, cache);
+    return glint_binomial_variant(variant, N, p, u1, u2, method);
+}

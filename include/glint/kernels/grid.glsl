@@ -235,16 +235,14 @@ GLINT_FN vec4 glint_slope_weights(vec2 s, real cell, GLINT_OUT(ivec2) base) {
 // single-light estimate below and the multi-level one of ibl.glsl.
 struct glint_grid_vertices {
     int count;
-    real N;  // density x footprint area
     real weight[12];
     real share[12];
     uvec3 hash[12];
 };
 
-GLINT_FN glint_grid_vertices glint_footprint_vertices(vec2 uv, glint_footprint f, real N, glint_grid_params g) {
+GLINT_FN glint_grid_vertices glint_footprint_vertices(vec2 uv, glint_footprint f, glint_grid_params g) {
     glint_grid_vertices v;
     v.count = 0;
-    v.N = N;
     for (int i = 0; i < 12; ++i) {
         v.weight[i] = real(0);
         v.share[i] = real(0);
@@ -329,7 +327,7 @@ GLINT_FN glint_grid_estimate glint_grid_sample(vec2 uv, vec2 duvdx, vec2 duvdy, 
         return o;
     }
     if (!(N > real(1e-30))) return o;  // no footprint, no microfacets
-    glint_grid_vertices v = glint_footprint_vertices(uv, f, N, g);
+    glint_grid_vertices v = glint_footprint_vertices(uv, f, g);
     // The slope corners that can reflect, in plain arrays (a vector indexed in a loop costs a
     // switch per access in C++), and the skip test's constant part, hoisted out of the loops.
     int corners = 0;
@@ -364,9 +362,7 @@ GLINT_FN glint_grid_estimate glint_grid_sample(vec2 uv, vec2 duvdx, vec2 duvdy, 
             real u1 = glint_open_unit_from_bits(hs.x);
             if (skip_test && glint_surely_no_success_at(skip_scale, corner_p[j], u1)) continue;
             real u2 = glint_open_unit_from_bits(hs.y);
-            glint_binomial b = (g.variant == GLINT_BINOMIAL_UNBIASED)
-                                   ? glint_binomial_unbiased_cached(n, corner_p[j], u1, u2, g.pow_method, cache[j])
-                                   : glint_binomial_variant(g.variant, n, corner_p[j], u1, u2, g.pow_method);
+            glint_binomial b = glint_binomial_variant_cached(g.variant, n, corner_p[j], u1, u2, g.pow_method, cache[j]);
             o.value += v.weight[i] * corner_m[j] * b.positive / N;  // the draw itself carries w_L
             ++o.draws;
         }

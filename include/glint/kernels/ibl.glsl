@@ -80,7 +80,7 @@ GLINT_FN glint_ibl_shares glint_ibl_level_shares(vec2 uv, glint_footprint f, rea
     for (int k = 0; k < 8; ++k) o.share[k] = real(0);
     o.draws = 0;
     if (!(N > real(1e-30))) return o;
-    glint_grid_vertices v = glint_footprint_vertices(uv, f, N, g);
+    glint_grid_vertices v = glint_footprint_vertices(uv, f, g);
     real lit_total = real(0);
     for (int k = 0; k < 8; ++k) lit_total += lit.p[k];
     // The triangle vertices of a lattice point share the root's N and p (glint_grid_sample).

@@ -50,8 +50,7 @@ GLINT_FN glint_multinomial_counts glint_multinomial_cached(real N, glint_multino
     for (int k = 0; k < 8; ++k) result.count[k] = real(0);
     // Root: the K bins against the rest.
     vec2 u = glint_multinomial_uniforms(seed, 0);
-    glint_binomial root = (variant == GLINT_BINOMIAL_UNBIASED) ? glint_binomial_unbiased_cached(N, total, u.x, u.y, method, root_cache)
-                                                               : glint_binomial_variant(variant, N, total, u.x, u.y, method);
+    glint_binomial root = glint_binomial_variant_cached(variant, N, total, u.x, u.y, method, root_cache);
     result.rest = root.negative;
 
     // Breadth-first over the inner nodes [lo, hi) of the bins, at most K - 1 = 7 of them; a node's

@@ -71,7 +71,7 @@ BENCHMARK(normal_quantile<double>);
 template <class real>
 void log1p_kernel(benchmark::State& state) {
     static const auto us = glint_bench::uniform_table<real>();
-    unary(state, us, [](real u) { return glint::detail::glsl::core_kernels<real>::glint_log1p(-u); });
+    unary(state, us, [](real u) { return glint::detail::glsl::kernels<real>::glint_log1p(-u); });
 }
 BENCHMARK(log1p_kernel<float>);
 BENCHMARK(log1p_kernel<double>);
@@ -87,7 +87,7 @@ BENCHMARK(log1p_std<double>);
 template <class real>
 void expm1_kernel(benchmark::State& state) {
     static const auto us = glint_bench::uniform_table<real>();
-    unary(state, us, [](real u) { return glint::detail::glsl::core_kernels<real>::glint_expm1_nonpositive(real(-4) * u); });
+    unary(state, us, [](real u) { return glint::detail::glsl::kernels<real>::glint_expm1_nonpositive(real(-4) * u); });
 }
 BENCHMARK(expm1_kernel<float>);
 BENCHMARK(expm1_kernel<double>);

@@ -146,8 +146,8 @@ pow_summary summarize(glint::pow_method m, std::ostream* csv) {
 
 section core_section(double min_time) {
     using glint::pow_method;
-    using kf = glint::detail::glsl::core_kernels<float>;
-    using kd = glint::detail::glsl::core_kernels<double>;
+    using kf = glint::detail::glsl::kernels<float>;
+    using kd = glint::detail::glsl::kernels<double>;
 
     // Time every row in one run.
     const auto sf = glint_bench::signed_table<float>();

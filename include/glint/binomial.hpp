@@ -62,57 +62,40 @@
 #pragma once
 
 #include "glint/core.hpp"
-#include "glint/detail/kernel_begin.hpp"
-
-namespace glint {
-namespace detail {
-namespace glsl {
-
-template <class real>
-struct binomial_kernels {
-    GLINT_KERNEL_TYPES
-#include "glint/kernels/core.glsl"
-#include "glint/kernels/binomial.glsl"
-};
-
-}  // namespace glsl
-}  // namespace detail
-}  // namespace glint
-
-#include "glint/detail/kernel_end.hpp"
+#include "glint/detail/kernels.hpp"
 
 namespace glint {
 
 // {positive, negative} outcome counts.
 template <class real>
-using binomial_result = typename detail::glsl::binomial_kernels<real>::glint_binomial;
+using binomial_result = typename detail::glsl::kernels<real>::glint_binomial;
 
 // u1 is not used; the parameter keeps the variants interchangeable.
 template <class real>
 binomial_result<real> binomial_ungated(real N, real p, real /*u1*/, real u2) {
-    return detail::glsl::binomial_kernels<real>::glint_binomial_ungated(N, p, u2);
+    return detail::glsl::kernels<real>::glint_binomial_ungated(N, p, u2);
 }
 
 // As published, DB23 evaluates P(n >= 1) as pow(1 - p, N) (method naive).
 template <class real>
 binomial_result<real> binomial_gated_db23(real N, real p, real u1, real u2, pow_method method = pow_method::naive) {
-    return detail::glsl::binomial_kernels<real>::glint_binomial_gated_db23(N, p, u1, u2, static_cast<int>(method));
+    return detail::glsl::kernels<real>::glint_binomial_gated_db23(N, p, u1, u2, static_cast<int>(method));
 }
 
 // As published, KK25 evaluates (1 - p)^N with its Eq. 25 (method kk25).
 template <class real>
 binomial_result<real> binomial_gated(real N, real p, real u1, real u2, pow_method method = pow_method::kk25) {
-    return detail::glsl::binomial_kernels<real>::glint_binomial_gated(N, p, u1, u2, static_cast<int>(method));
+    return detail::glsl::kernels<real>::glint_binomial_gated(N, p, u1, u2, static_cast<int>(method));
 }
 
 template <class real>
 binomial_result<real> binomial_dual_gated(real N, real p, real u1, real u2, pow_method method = pow_method::kk25) {
-    return detail::glsl::binomial_kernels<real>::glint_binomial_dual_gated(N, p, u1, u2, static_cast<int>(method));
+    return detail::glsl::kernels<real>::glint_binomial_dual_gated(N, p, u1, u2, static_cast<int>(method));
 }
 
 template <class real>
 binomial_result<real> binomial_unbiased(real N, real p, real u1, real u2, pow_method method = pow_method::log1p) {
-    return detail::glsl::binomial_kernels<real>::glint_binomial_unbiased(N, p, u1, u2, static_cast<int>(method));
+    return detail::glsl::kernels<real>::glint_binomial_unbiased(N, p, u1, u2, static_cast<int>(method));
 }
 
 // The variants as a value, for code generic over them (glint::multinomial, tests, benches).
@@ -144,7 +127,7 @@ inline pow_method published_pow_method(binomial_variant v) {
 
 template <class real>
 binomial_result<real> binomial(binomial_variant v, real N, real p, real u1, real u2, pow_method method) {
-    return detail::glsl::binomial_kernels<real>::glint_binomial_variant(static_cast<int>(v), N, p, u1, u2, static_cast<int>(method));
+    return detail::glsl::kernels<real>::glint_binomial_variant(static_cast<int>(v), N, p, u1, u2, static_cast<int>(method));
 }
 
 template <class real>

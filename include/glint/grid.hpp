@@ -41,35 +41,16 @@
 
 #include "glint/binomial.hpp"
 #include "glint/microfacet.hpp"
-#include "glint/detail/kernel_begin.hpp"
-
-namespace glint {
-namespace detail {
-namespace glsl {
-
-template <class real>
-struct grid_kernels {
-    GLINT_KERNEL_TYPES
-#include "glint/kernels/core.glsl"
-#include "glint/kernels/binomial.glsl"
-#include "glint/kernels/microfacet.glsl"
-#include "glint/kernels/grid.glsl"
-};
-
-}  // namespace glsl
-}  // namespace detail
-}  // namespace glint
-
-#include "glint/detail/kernel_end.hpp"
+#include "glint/detail/kernels.hpp"
 
 namespace glint {
 
 template <class real>
-using grid_estimate = typename detail::glsl::grid_kernels<real>::glint_grid_estimate;
+using grid_estimate = typename detail::glsl::kernels<real>::glint_grid_estimate;
 template <class real>
-using grid_light = typename detail::glsl::grid_kernels<real>::glint_grid_light;
+using grid_light = typename detail::glsl::kernels<real>::glint_grid_light;
 template <class real>
-using footprint_lattice = typename detail::glsl::grid_kernels<real>::glint_lattice;
+using footprint_lattice = typename detail::glsl::kernels<real>::glint_lattice;
 
 // The material's glint parameters (defaults: the showcase's).
 template <class real>
@@ -84,10 +65,10 @@ struct grid_params {
 };
 
 namespace detail {
-// The kernel struct of the parameters, for a component's kernels class (each has its own type).
-template <class kernels, class real>
-typename kernels::glint_grid_params to_kernel(const grid_params<real>& g) {
-    typename kernels::glint_grid_params k;
+// The kernels' struct of the parameters.
+template <class real>
+typename glsl::kernels<real>::glint_grid_params to_kernel(const grid_params<real>& g) {
+    typename glsl::kernels<real>::glint_grid_params k;
     k.log_density = g.log_density;
     k.density_sigma = g.density_sigma;
     k.lod_scale = g.lod_scale;
@@ -136,12 +117,12 @@ grid_light<real> grid_extended_light(real p, const vec3_t<real>& h) {
 template <class real>
 grid_estimate<real> grid_sample(const vec2_t<real>& uv, const vec2_t<real>& duvdx, const vec2_t<real>& duvdy,
                                 const grid_params<real>& g, const grid_light<real>& light) {
-    return detail::glsl::grid_kernels<real>::glint_grid_sample(uv, duvdx, duvdy, detail::to_kernel<detail::glsl::grid_kernels<real>>(g), light);
+    return detail::glsl::kernels<real>::glint_grid_sample(uv, duvdx, duvdy, detail::to_kernel(g), light);
 }
 
 // R / E[R], the factor on the smooth result (the kernels' glint_modulation; 0 if E[R] = 0), for
-// the estimates of glint::grid_sample and glint::ibl_sample. Each component's kernel struct has
-// its own estimate type, and real cannot be deduced through it: a template on the estimate.
+// the estimates of glint::grid_sample and glint::ibl_sample (one type, glint_grid_estimate, whose
+// real cannot be deduced through the nested name: a template on the estimate).
 template <class estimate>
 auto modulation(const estimate& e) -> decltype(e.value) {
     using real = decltype(e.value);
@@ -151,7 +132,7 @@ auto modulation(const estimate& e) -> decltype(e.value) {
 // The lattice points and weights of a footprint (for tests and visualisation).
 template <class real>
 footprint_lattice<real> lattice_of(const vec2_t<real>& duvdx, const vec2_t<real>& duvdy, real lod_scale) {
-    using k = detail::glsl::grid_kernels<real>;
+    using k = detail::glsl::kernels<real>;
     return k::glint_footprint_lattice(k::glint_footprint_from_derivatives(duvdx, duvdy), lod_scale);
 }
 

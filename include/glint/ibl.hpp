@@ -41,43 +41,22 @@
 #include "glint/grid.hpp"
 #include "glint/microfacet.hpp"
 #include "glint/multinomial.hpp"
-#include "glint/detail/kernel_begin.hpp"
-
-namespace glint {
-namespace detail {
-namespace glsl {
-
-template <class real>
-struct ibl_kernels {
-    GLINT_KERNEL_TYPES
-#include "glint/kernels/core.glsl"
-#include "glint/kernels/binomial.glsl"
-#include "glint/kernels/multinomial.glsl"
-#include "glint/kernels/microfacet.glsl"
-#include "glint/kernels/grid.glsl"
-#include "glint/kernels/ibl.glsl"
-};
-
-}  // namespace glsl
-}  // namespace detail
-}  // namespace glint
-
-#include "glint/detail/kernel_end.hpp"
+#include "glint/detail/kernels.hpp"
 
 namespace glint {
 
 template <class real>
-using ibl_levels = typename detail::glsl::ibl_kernels<real>::glint_ibl_levels;
+using ibl_levels = typename detail::glsl::kernels<real>::glint_ibl_levels;
 template <class real>
-using ibl_indicators = typename detail::glsl::ibl_kernels<real>::glint_ibl_indicators;
+using ibl_indicators = typename detail::glsl::kernels<real>::glint_ibl_indicators;
 template <class real>
-using ibl_estimate = typename detail::glsl::ibl_kernels<real>::glint_grid_estimate;
+using ibl_estimate = typename detail::glsl::kernels<real>::glint_grid_estimate;
 
 // The glint estimate under the environment (kernels/ibl.glsl, glint_ibl_sample).
 template <class real>
 ibl_estimate<real> ibl_sample(const vec2_t<real>& uv, const vec2_t<real>& duvdx, const vec2_t<real>& duvdy, const grid_params<real>& g,
                               const ibl_levels<real>& levels, const ibl_indicators<real>& indicators, real e_d, real d_h) {
-    return detail::glsl::ibl_kernels<real>::glint_ibl_sample(uv, duvdx, duvdy, detail::to_kernel<detail::glsl::ibl_kernels<real>>(g), levels,
+    return detail::glsl::kernels<real>::glint_ibl_sample(uv, duvdx, duvdy, detail::to_kernel(g), levels,
                                                              indicators, e_d, d_h);
 }
 
@@ -111,7 +90,7 @@ public:
 
     // Trilinear lookup at direction d (world, y up) and sqrt(alpha) in [0, 1].
     sample lookup(const glm::vec3& d, float sqrt_alpha) const {
-        using k = detail::glsl::ibl_kernels<float>;
+        using k = detail::glsl::kernels<float>;
         const glm::vec2 uv = k::glint_equirect_uv(d);
         const float f = std::clamp(sqrt_alpha, 0.0f, 1.0f) * static_cast<float>(chain_.size() - 1);
         const std::size_t m0 = std::min(static_cast<std::size_t>(f), chain_.size() - 1), m1 = std::min(m0 + 1, chain_.size() - 1);
@@ -140,7 +119,7 @@ private:
 
     // out[0..C) += weight x the GL_LINEAR filtered texel of m at uv.
     static void add_bilinear(const map& m, const glm::vec2& uv, int C, float weight, float* out) {
-        const auto taps = detail::glsl::ibl_kernels<float>::glint_bilinear(uv, m.width, m.height);
+        const auto taps = detail::glsl::kernels<float>::glint_bilinear(uv, m.width, m.height);
         for (int i = 0; i < 4; ++i) {
             const float w = weight * taps.weight[i];
             const float* px = &m.data[(static_cast<std::size_t>(taps.texel[i].y) * static_cast<std::size_t>(m.width) + static_cast<std::size_t>(taps.texel[i].x)) *
@@ -234,7 +213,7 @@ inline const std::pair<std::vector<float>, std::vector<float>>& ibl_tables(int T
 // bottom). Throws glint::error for an empty image, a pixel count that does not match, levels
 // outside 3..8, a black level <= 0, fewer than 2 roughness levels, or fewer than 1 sample.
 inline environment build_environment(int width, int height, const std::vector<float>& rgb, const ibl_options& o) {
-    using k = detail::glsl::ibl_kernels<float>;
+    using k = detail::glsl::kernels<float>;
     if (width < 2 || height < 2)
         throw error("glint::build_environment: the map is " + std::to_string(width) + " x " + std::to_string(height) + "; at least 2 x 2 is needed");
     if (rgb.size() != 3 * static_cast<std::size_t>(width) * static_cast<std::size_t>(height))

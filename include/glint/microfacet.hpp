@@ -37,24 +37,7 @@
 #pragma once
 
 #include "glint/core.hpp"
-#include "glint/detail/kernel_begin.hpp"
-
-namespace glint {
-namespace detail {
-namespace glsl {
-
-template <class real>
-struct microfacet_kernels {
-    GLINT_KERNEL_TYPES
-#include "glint/kernels/core.glsl"
-#include "glint/kernels/microfacet.glsl"
-};
-
-}  // namespace glsl
-}  // namespace detail
-}  // namespace glint
-
-#include "glint/detail/kernel_end.hpp"
+#include "glint/detail/kernels.hpp"
 
 namespace glint {
 
@@ -69,7 +52,7 @@ using vec3_t = glm::vec<3, real, glm::defaultp>;
 
 namespace detail {
 template <class real>
-using mk = glsl::microfacet_kernels<real>;
+using mk = glsl::kernels<real>;
 }
 
 // D(m) per unit solid angle; 0 for m.z <= 0.

@@ -14,25 +14,7 @@
 #include <cstddef>
 
 #include "glint/binomial.hpp"
-#include "glint/detail/kernel_begin.hpp"
-
-namespace glint {
-namespace detail {
-namespace glsl {
-
-template <class real>
-struct multinomial_kernels {
-    GLINT_KERNEL_TYPES
-#include "glint/kernels/core.glsl"
-#include "glint/kernels/binomial.glsl"
-#include "glint/kernels/multinomial.glsl"
-};
-
-}  // namespace glsl
-}  // namespace detail
-}  // namespace glint
-
-#include "glint/detail/kernel_end.hpp"
+#include "glint/detail/kernels.hpp"
 
 namespace glint {
 
@@ -53,7 +35,7 @@ template <std::size_t K, class real>
 multinomial_result<real, K> multinomial(real N, const std::array<real, K>& p, glm::uvec3 seed, binomial_variant variant,
                                         pow_method method) {
     static_assert(K >= 2 && K <= 8, "glint::multinomial: K must be 2..8");
-    using k = detail::glsl::multinomial_kernels<real>;
+    using k = detail::glsl::kernels<real>;
     typename k::glint_multinomial_probabilities probs;
     for (std::size_t i = 0; i < 8; ++i) probs.p[i] = i < K ? p[i] : real(0);
     const auto c = k::glint_multinomial(N, probs, static_cast<int>(K), seed, static_cast<int>(variant), static_cast<int>(method));

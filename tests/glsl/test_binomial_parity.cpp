@@ -100,7 +100,7 @@ TEST_CASE("multinomial kernel: GLSL against C++, K = 4 and 8") {
         for (std::size_t i = 0; i < n; ++i) {
             std::array<float, 8> p{};
             for (int k = 0; k < 8; ++k) p[static_cast<std::size_t>(k)] = static_cast<float>(0.8 * (k + 1) / (K * (K + 1) / 2));
-            using kern = glint::detail::glsl::multinomial_kernels<float>;
+            using kern = glint::detail::glsl::kernels<float>;
             kern::glint_multinomial_probabilities pr;
             for (int k = 0; k < 8; ++k) pr.p[k] = p[static_cast<std::size_t>(k)];
             const auto c = kern::glint_multinomial(Ns[i], pr, K, glm::uvec3(static_cast<std::uint32_t>(i), 7u, 1u), 4, 2);

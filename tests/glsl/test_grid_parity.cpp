@@ -64,7 +64,7 @@ TEST_CASE("microfacet kernels: GLSL against C++ (D, Lambda, G2, VNDF, D_H, condu
         " vec3 s = glint_sample_vndf_ggx(wo, a, a.x, a.y);"
         " out0[9u*i+6u] = floatBitsToUint(s.x); out0[9u*i+7u] = floatBitsToUint(s.y); out0[9u*i+8u] = floatBitsToUint(s.z);";
     const auto gpu = glint_test::from_words<float>(glint_test::map_words({"core.glsl", "microfacet.glsl"}, body, in, n, 9));
-    using K = glint::detail::glsl::microfacet_kernels<float>;
+    using K = glint::detail::glsl::kernels<float>;
     const char* names[] = {"D", "Lambda", "G2", "VNDF", "D_H", "Fresnel", "sample.x", "sample.y", "sample.z"};
     for (int k = 0; k < 9; ++k) {
         std::vector<float> g, c;
@@ -107,7 +107,7 @@ TEST_CASE("D_Omega kernels: GLSL against C++ for cones and rectangles") {
         " vec3 e1 = normalize(cross(c, vec3(0.0, 0.2, 1.0))) * s; vec3 e2 = normalize(cross(e1, c)) * s;"
         " out0[2u*i+1u] = floatBitsToUint(glint_integrated_ndf_rect(d, wo, a, c - 0.5 * e1 - 0.5 * e2, e1, e2, 8));";
     const auto gpu = glint_test::from_words<float>(glint_test::map_words({"core.glsl", "microfacet.glsl"}, body, in, n, 2));
-    using K = glint::detail::glsl::microfacet_kernels<float>;
+    using K = glint::detail::glsl::kernels<float>;
     std::vector<float> gc, cc, gr, cr;
     for (std::uint32_t i = 0; i < n; ++i) {
         const int d = static_cast<int>(i & 1u);
@@ -140,7 +140,7 @@ TEST_CASE("grid estimate: GLSL against C++ for point and extended lights, every 
                                -fp / ratio * std::sin(ang), fp / ratio * std::cos(ang), h.x, h.y, h.z, -4.0f + 10.0f * rnd(i, 15),
                                0.4f * rnd(i, 16)});
     }
-    using K = glint::detail::glsl::grid_kernels<float>;
+    using K = glint::detail::glsl::kernels<float>;
     for (int v = 0; v <= 4; ++v) {
         const std::string body =
             "uint b = 11u * i; vec2 uv = in_vec2(b); vec2 dx = in_vec2(b+2u); vec2 dy = in_vec2(b+4u); vec3 h = in_vec3(b+6u);"

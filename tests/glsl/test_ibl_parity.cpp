@@ -16,7 +16,7 @@
 
 namespace {
 
-using K = glint::detail::glsl::ibl_kernels<float>;
+using K = glint::detail::glsl::kernels<float>;
 
 float rnd(std::uint32_t i, std::uint32_t salt) { return glint::unit_from_bits<float>(glint::pcg3d(glm::uvec3(i, salt, 0x1bu)).x); }
 

@@ -17,7 +17,7 @@
 #include <glint/testing/stats.hpp>
 
 namespace gt = glint::testing;
-using K = glint::detail::glsl::ibl_kernels<float>;
+using K = glint::detail::glsl::kernels<float>;
 
 namespace {
 

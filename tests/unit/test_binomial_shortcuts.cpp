@@ -21,7 +21,7 @@ namespace gt = glint::testing;
 namespace {
 
 template <class real>
-using K = glint::detail::glsl::binomial_kernels<real>;
+using K = glint::detail::glsl::kernels<real>;
 
 template <class real>
 glint::binomial_result<real> pair(real positive, real negative) {

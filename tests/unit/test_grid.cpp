@@ -17,7 +17,7 @@
 
 namespace {
 
-using K = glint::detail::glsl::grid_kernels<float>;
+using K = glint::detail::glsl::kernels<float>;
 using lattice_map = std::map<std::tuple<int, int, int>, double>;
 
 glm::vec2 random_unit(std::uint32_t i, std::uint32_t salt) {
@@ -97,7 +97,7 @@ TEST_CASE("lattice rotations: cos and sin of bin pi / 2^(level + 1) from the tab
     // double cos and sin of the long double angle, rounded once to float and to double: the table
     // must give exactly those in float, and within 1 ulp in double (the long double angle is
     // itself rounded, 2^-64 relative).
-    using KD = glint::detail::glsl::grid_kernels<double>;
+    using KD = glint::detail::glsl::kernels<double>;
     int checked = 0, float_differ = 0, double_far = 0;
     for (int level = 0; level <= 4; ++level)
         for (int bin = 0; bin < (2 << level); ++bin) {

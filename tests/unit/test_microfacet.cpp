@@ -83,8 +83,8 @@ TEST_CASE("the visible NDF integrates to 1 (Smith's Lambda is consistent with D)
 }
 
 TEST_CASE("the radial mass and tail closed forms agree with quadrature, and with each other") {
-    using K = glint::detail::glsl::microfacet_kernels<double>;
-    using KF = glint::detail::glsl::microfacet_kernels<float>;
+    using K = glint::detail::glsl::kernels<double>;
+    using KF = glint::detail::glsl::kernels<float>;
     // GGX's forms are exact; Beckmann's use the erfc fit (1.2e-7), amplified at most about 2x.
     double worst[2] = {0, 0}, worst_float = 0;
     for (int d = 0; d < 2; ++d)

@@ -77,7 +77,7 @@ TEST_CASE("bad probabilities are tamed: negative as 0, a sum above 1 scaled down
 }
 
 TEST_CASE("a root cache gives exactly the uncached counts (runs of three draws at one N, as the IBL grid makes them)") {
-    using MK = glint::detail::glsl::multinomial_kernels<float>;
+    using MK = glint::detail::glsl::kernels<float>;
     MK::glint_multinomial_probabilities probs;
     for (int k = 0; k < 8; ++k) probs.p[k] = 0.03f * static_cast<float>(k + 1);
     long checked = 0, differ = 0;

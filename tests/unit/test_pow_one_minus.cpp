@@ -118,8 +118,8 @@ TEST_CASE("double instantiation of the log1p evaluation is accurate to double ro
 }
 
 TEST_CASE("log1p and expm1 kernels against long double on sweeps, float and double") {
-    using k_float = glint::detail::glsl::core_kernels<float>;
-    using k_double = glint::detail::glsl::core_kernels<double>;
+    using k_float = glint::detail::glsl::kernels<float>;
+    using k_double = glint::detail::glsl::kernels<double>;
     double worst_log1p = 0, worst_expm1 = 0, worst_log1p_d = 0, worst_expm1_d = 0;
     // log1p on x in (-1, 1e6): every 50th float pattern of (-1, 0) and of (0, 1e6).
     auto check_log1p = [&](float x) {

@@ -2,7 +2,7 @@
 // the binomial samplers. docs/pow_one_minus.md compares the methods in float.
 #pragma once
 
-#include "glint/core/kernels.hpp"
+#include "glint/detail/kernels.hpp"
 
 namespace glint {
 
@@ -15,14 +15,14 @@ enum class pow_method {
 // (1 - p)^N. p is clamped to [0, 1] and N to [0, inf); (1 - 1)^0 = 1.
 template <class real>
 real pow_one_minus(real p, real N, pow_method method = pow_method::log1p) {
-    return detail::glsl::core_kernels<real>::glint_pow_one_minus(p, N, static_cast<int>(method));
+    return detail::glsl::kernels<real>::glint_pow_one_minus(p, N, static_cast<int>(method));
 }
 
 // 1 - (1 - p)^N, the probability that N Bernoulli(p) trials give at least one success.
 // With pow_method::log1p it is -expm1(N log1p(-p)), accurate also when N p is tiny.
 template <class real>
 real any_success(real p, real N, pow_method method = pow_method::log1p) {
-    return detail::glsl::core_kernels<real>::glint_any_success(p, N, static_cast<int>(method));
+    return detail::glsl::kernels<real>::glint_any_success(p, N, static_cast<int>(method));
 }
 
 }  // namespace glint

@@ -1,11 +1,11 @@
 // glint: C++ side of the single-source kernel compat layer, opening half.
 //
 // Kernel files (include/glint/kernels/*.glsl) are written in the common subset of GLSL 4.50 and
-// C++17 (docs/conventions.md). On the C++ side a component header includes them inside a class
-// template `template <class real> struct ..._kernels { GLINT_KERNEL_TYPES ... };` placed in
+// C++17 (docs/conventions.md). On the C++ side glint/detail/kernels.hpp includes them all inside
+// one class template `template <class real> struct kernels { GLINT_KERNEL_TYPES ... };` placed in
 // namespace glint::detail::glsl, where GLM's functions are visible unqualified. This header
 // defines the macros the kernel text needs; kernel_end.hpp removes every one of them, so nothing
-// leaks into user code. No include guard: the pair is used once per component header.
+// leaks into user code. No include guard: the pair is used once, by glint/detail/kernels.hpp.
 #include <cstdint>
 #include <type_traits>
 

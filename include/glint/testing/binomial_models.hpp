@@ -141,7 +141,7 @@ private:
 // 1 - P <= u1).
 template <class real = double>
 binomial_model model_of(binomial_variant variant, double N_in, double p_in, pow_method method) {
-    using k = glint::detail::glsl::binomial_kernels<real>;
+    using k = glint::detail::glsl::kernels<real>;
     constexpr bool as_float = std::is_same<real, float>::value;
     const int m = static_cast<int>(method);
     const real Nr = std::max(static_cast<real>(N_in), real(0)), pr = std::min(std::max(static_cast<real>(p_in), real(0)), real(1));

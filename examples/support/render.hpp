@@ -12,9 +12,9 @@
 #include <vector>
 
 #include <glint/io/exr.hpp>
+#include <glint/io/png.hpp>
 
 #include "cli.hpp"
-#include "png.hpp"
 
 namespace glint_examples {
 
@@ -57,7 +57,7 @@ inline void write_exr_and_preview(const std::string& exr_path, int width, int he
     std::vector<std::uint8_t> preview(rgb.size());
     for (std::size_t i = 0; i < rgb.size(); ++i) preview[i] = to_srgb8(rgb[i], exposure);
     const std::string png = exr_path.substr(0, exr_path.size() - 4) + ".png";
-    write_png(png, width, height, preview);
+    glint::io::write_png_rgb8(png, width, height, preview);
     std::printf("wrote %s and %s\n", exr_path.c_str(), png.c_str());
 }
 

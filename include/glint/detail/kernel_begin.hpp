@@ -29,6 +29,10 @@ using namespace glm;  // NOLINT: confined to glint::detail::glsl
 // An expression the compiler must evaluate as written (in GLSL: `precise`). C++ needs nothing:
 // the tests build with -ffp-contract=off and without -ffast-math.
 #define GLINT_PRECISE
+// The element buffer of kernels/gaussian.glsl: in C++ a parameter (and its argument), in GLSL
+// nothing (a shader storage buffer named glint_element_data).
+#define GLINT_ELEMENT_DATA_PARAM const vec4* glint_element_data,
+#define GLINT_ELEMENT_DATA_ARG glint_element_data,
 // A named constant (in GLSL: `const T`).
 #define GLINT_CONST(T) static constexpr T
 // The vector aliases that depend on the precision `real` (in GLSL: the builtin float vectors),

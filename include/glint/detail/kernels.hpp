@@ -22,6 +22,7 @@ struct kernels {
 #include "glint/kernels/microfacet.glsl"
 #include "glint/kernels/grid.glsl"
 #include "glint/kernels/ibl.glsl"
+#include "glint/kernels/gaussian.glsl"
 };
 
 }  // namespace glsl

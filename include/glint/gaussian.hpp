@@ -1,0 +1,531 @@
+// Normal-mapped microstructure as YHMR16's 4D Gaussian elements, and the P-NDF of a pixel
+// footprint (XTXW24 Eq. 2-6, kernels/gaussian.glsl) with a hierarchy that makes it fast, the
+// BRDF (XTXW24 Eq. 1), and importance sampling of half vectors.
+//
+//   glint::normal_map m = glint::make_normal_map(p);                      // or glint::io::read_normal_map
+//   glint::gaussian_params<float> g;  g.sigma_r = 0.005f;                 // intrinsic roughness
+//   auto pndf = glint::gaussian_pndf<float>::build(m, g);                 // host side, may throw
+//   auto fp = glint::footprint_from_uv_derivatives(uv, duvdx, duvdy, texels_per_uv);   // per pixel
+//   float d = pndf.eval(fp, glm::vec2(h.x, h.y));                         // density over the disk
+//   float f = pndf.brdf(fp, wi, wo, eta, k);                              // Eq. 1
+//
+// Elements (YHMR16 Sec. 4; XTXW24 Eq. 3-5). Seeds on a lattice of spacing h = 1 / r texels
+// (r = elements_per_texel, 1, 2 or 4 per texel side) at ((i + 1/2) h, (j + 1/2) h); each stores the
+// periodic bicubic (Catmull-Rom) normal's xy part s_i and its analytic Jacobian J_i = ds/du
+// (normal_map.hpp), weight a_i = h^2, and the seed Gaussian's sd sigma_h = h / sqrt(8 ln 2)
+// (0.4247 h: its full width at half maximum is h; YHMR16's choice; Yan's released code uses
+// 0.433 h). sigma_r is the intrinsic roughness of every lobe.
+//
+// P-NDF. D_P(s) = sum_i I_i(s), I_i the closed form of Eq. 6 (kernels/gaussian.glsl gives it and
+// its float-robust evaluation). D_P is a density over the projected disk |s| < 1 of normals
+// (0 outside); it integrates to sum_i w_i, the footprint's element weight, which is 1 up to the
+// lattice's Poisson-summation ripple (2 exp(-2 pi^2 (sigma_h^2 + lambda_min) / h^2) per axis: 5.7%
+// for a point footprint at r = 1, 4e-4 at sigma_P = h / 2, below 1e-9 for sigma_P >= h).
+//
+// Culling (stated bounds). An element counts where its footprint offset's Mahalanobis radius is
+// at most cull_u (default 3.5), with its weight tapered smoothly to 0 between cull_u - 1 and cull_u
+// (so D_P is continuous as the footprint moves: YHMR16's hard cut at 3 makes it jump by about 2%;
+// at 3.5 the taper's error matches that cut's, about 1% in L1, docs/microstructure.md), and
+// where s lies within cull_s (default 4) of its lobe in C's Mahalanobis metric (exp(-8) = 3.4e-4
+// of each lobe's mass outside, a jump of that size in s). The kept parts are divided by the kept
+// masses (kernels/gaussian.glsl: 0.9548 for the taper at cull_u = 3, 0.9878 at 3.5; YHMR16's hard
+// cut at 3 keeps 0.989 and loses the rest), so the culled P-NDF keeps the footprint's mass; its error is only the
+// culled elements' different normals (measured: docs/microstructure.md). The hierarchy never changes which elements
+// count: it only skips those that provably fail these tests, using for element i the s-radius
+//   r_i = |J_i|_F cull_u sigma_h + cull_s sqrt(sigma_r^2 + |J_i|_F^2 sigma_h^2),
+// which bounds the lobe mean's shift (|J R diag(sigma_h^2 / kappa) e| <= |J| cull_u sigma_h inside the
+// ellipse, since kappa >= sigma_h^2) plus cull_s times C's largest sd (C <= sigma_r^2 + |B|^2).
+//
+// Hierarchy (host side). A normal-space grid over [-1, 1]^2: each cell lists the elements whose
+// s-box (s_i +- r_i) overlaps it, sorted along a Morton curve of their lattice position, with a
+// bounding-box tree over runs of 8 (the position tree). A query visits the cell holding s and,
+// for each periodic image of the map the footprint's culling box touches, the nodes whose boxes
+// it overlaps: its cost follows the elements whose normals are near s, not the footprint's area.
+// Elements whose s-box would span more than 64 cells (steep groove walls) go to one extra list
+// that every query visits. Footprints so wide that the periodic images blur into the map's
+// average (large_footprint below: error below 4e-8) use the continuum limit of the periodic sum,
+// sum_i marginal_i(s) / map area, which is exact as the footprint grows (the lobe's mean shift,
+// averaged over the images, adds sigma_h^4 J kappa^-1 J^T to C, which makes it sigma_h^2 J J^T).
+//
+// Domains. sigma_r in [1e-4, 1] (the kernels clamp it below at 1e-5); footprint covariances
+// finite and positive semi-definite (0 is a point footprint); s finite. Per-pixel calls never
+// allocate or throw and return 0 for |s| >= 1, non-finite s, or h below the horizon.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <limits>
+#include <numeric>
+#include <string>
+#include <vector>
+
+#include "glint/core/error.hpp"
+#include "glint/microfacet.hpp"
+#include "glint/normal_map.hpp"
+
+namespace glint {
+
+// A Gaussian footprint N(u; center, covariance) in texels.
+template <class real>
+struct texel_footprint {
+    vec2_t<real> center{0};
+    glm::mat<2, 2, real, glm::defaultp> covariance{0};
+};
+
+// The footprint of a pixel with uv derivatives duvdx, duvdy on a map of texels_per_uv texels per
+// uv unit: Heckbert's Gaussian, covariance sigma_pix^2 T^2 (du/dx du/dx^T + du/dy du/dy^T), where
+// sigma_pix is the pixel filter's sd in pixels (0.5, Yan's released code; XTXW24 Sec. 6.3).
+template <class real>
+texel_footprint<real> footprint_from_uv_derivatives(const vec2_t<real>& uv, const vec2_t<real>& duvdx, const vec2_t<real>& duvdy,
+                                                    real texels_per_uv, real sigma_pix = real(0.5)) {
+    const vec2_t<real> a = duvdx * (texels_per_uv * sigma_pix), b = duvdy * (texels_per_uv * sigma_pix);
+    texel_footprint<real> f;
+    f.center = uv * texels_per_uv;
+    f.covariance = glm::mat<2, 2, real, glm::defaultp>(a.x * a.x + b.x * b.x, a.x * a.y + b.x * b.y, a.x * a.y + b.x * b.y, a.y * a.y + b.y * b.y);
+    return f;
+}
+
+template <class real>
+struct gaussian_params {
+    real sigma_r = real(0.005);  // intrinsic roughness, [1e-4, 1]
+    int elements_per_texel = 1;  // seeds per texel side: 1, 2 or 4
+    real cull_u = real(3.5);     // footprint culling radius (Mahalanobis; tapered from cull_u - 1), [2, 8]
+    real cull_s = real(4);       // lobe culling radius (Mahalanobis), [1, 8]
+    int direct_max_side = 128;   // eval_direct and GLSL: at most this many lattice steps each side
+};
+
+// A half vector drawn from the P-NDF: its projected-disk point s, h = (s, sqrt(1 - |s|^2)), and
+// the densities of s (per unit disk area) and of h (per solid angle, pdf_s cos theta_h). valid is
+// false (and the densities 0) when the draw left the disk or the footprint holds no element.
+template <class real>
+struct pndf_sample {
+    vec2_t<real> s{0};
+    vec3_t<real> h{0, 0, 1};
+    real pdf_s = 0, pdf_h = 0;
+    bool valid = false;
+};
+
+template <class real>
+class gaussian_pndf {
+public:
+    using kernels = detail::glsl::kernels<real>;
+    using element = typename kernels::glint_gaussian_element;
+    using frame = typename kernels::glint_pndf_frame;
+    using params = typename kernels::glint_pndf_params;
+    using vec2 = vec2_t<real>;
+    using vec4 = glm::vec<4, real, glm::defaultp>;
+
+    static gaussian_pndf build(const normal_map& map, const gaussian_params<real>& g) {
+        const std::string what = "glint::gaussian_pndf::build: ";
+        if (map.width() <= 0 || map.height() <= 0) throw error(what + "the normal map is empty");
+        if (g.elements_per_texel != 1 && g.elements_per_texel != 2 && g.elements_per_texel != 4)
+            throw error(what + "elements_per_texel = " + std::to_string(g.elements_per_texel) + " (1, 2 or 4)");
+        if (!(g.sigma_r >= real(1e-4) && g.sigma_r <= real(1))) throw error(what + "sigma_r = " + std::to_string(g.sigma_r) + " is outside [1e-4, 1]");
+        if (!(g.cull_u >= 2 && g.cull_u <= 8)) throw error(what + "cull_u = " + std::to_string(g.cull_u) + " is outside [2, 8]");
+        if (!(g.cull_s >= 1 && g.cull_s <= 8)) throw error(what + "cull_s = " + std::to_string(g.cull_s) + " is outside [1, 8]");
+        if (g.direct_max_side < 1) throw error(what + "direct_max_side = " + std::to_string(g.direct_max_side) + " is below 1");
+        const long lw = static_cast<long>(map.width()) * g.elements_per_texel, lh = static_cast<long>(map.height()) * g.elements_per_texel;
+        if (lw * lh > (1L << 26)) throw error(what + "more than 2^26 elements (" + std::to_string(lw) + " x " + std::to_string(lh) + ")");
+        gaussian_pndf p;
+        const real h = real(1) / real(g.elements_per_texel);
+        p.g_ = g;
+        p.k_.sigma_h = h / std::sqrt(real(8) * std::log(real(2)));
+        p.k_.sigma_r = g.sigma_r;
+        p.k_.spacing = h;
+        p.k_.area = h * h;
+        p.k_.cull_u = g.cull_u;
+        p.k_.cull_s = g.cull_s;
+        p.k_.width = static_cast<int>(lw);
+        p.k_.height = static_cast<int>(lh);
+        p.k_.periodic = map.wrap() == wrap_mode::periodic ? 1 : 0;
+        p.k_.max_side = g.direct_max_side;
+        p.period_ = vec2(static_cast<real>(map.width()), static_cast<real>(map.height()));
+        const std::size_t n = static_cast<std::size_t>(lw * lh);
+        p.data_.resize(2 * n);
+        p.radius_.resize(n);
+        real slope2 = 0, jmax = 0;
+        for (long j = 0; j < lh; ++j)
+            for (long i = 0; i < lw; ++i) {
+                const double hd = static_cast<double>(h);
+                const glm::dvec2 u((static_cast<double>(i) + 0.5) * hd, (static_cast<double>(j) + 0.5) * hd);
+                const normal_sample<double> q = map.bicubic(u);
+                const std::size_t k = static_cast<std::size_t>(i + lw * j);
+                p.data_[2 * k] = vec4(static_cast<real>(u.x), static_cast<real>(u.y), static_cast<real>(q.s.x), static_cast<real>(q.s.y));
+                p.data_[2 * k + 1] = vec4(static_cast<real>(q.jacobian[0].x), static_cast<real>(q.jacobian[0].y), static_cast<real>(q.jacobian[1].x),
+                                          static_cast<real>(q.jacobian[1].y));
+                const double jf = std::sqrt(q.jacobian[0].x * q.jacobian[0].x + q.jacobian[0].y * q.jacobian[0].y + q.jacobian[1].x * q.jacobian[1].x +
+                                            q.jacobian[1].y * q.jacobian[1].y);
+                jmax = std::max(jmax, static_cast<real>(jf));
+                const double sh = static_cast<double>(p.k_.sigma_h), sr = static_cast<double>(g.sigma_r), cu = static_cast<double>(g.cull_u), cs = static_cast<double>(g.cull_s);
+                // Rounded up by 1e-4 relative plus 1e-6: the float kernel's own rounding stays inside.
+                p.radius_[k] = static_cast<real>((jf * cu * sh + cs * std::sqrt(sr * sr + jf * jf * sh * sh)) * (1 + 1e-4) + 1e-6);
+                const double z2 = std::max(1e-12, 1 - q.s.x * q.s.x - q.s.y * q.s.y);
+                slope2 += static_cast<real>((q.s.x * q.s.x + q.s.y * q.s.y) / z2);
+            }
+        p.jmax_ = jmax;
+        // Smith roughness for G (notes: alpha = sqrt(2 Var p) per axis, Beckmann): the mean squared
+        // slope over both axes, halved per axis, plus sigma_r^2.
+        p.alpha_g_ = std::sqrt(std::max(real(1e-8), slope2 / static_cast<real>(n) + real(2) * g.sigma_r * g.sigma_r));
+        p.build_grid();
+        return p;
+    }
+
+    // D_P(s) through the hierarchy (the culling above; equal to eval_direct without its box cap).
+    real eval(const texel_footprint<real>& fp, const vec2& s) const {
+        if (!(s.x * s.x + s.y * s.y < real(1))) return real(0);
+        const frame f = prepare(fp);
+        if (large_footprint(f)) return continuum_limit(s);
+        return query(cell_of(s), f, s) + query(grid_size_ * grid_size_, f, s);
+    }
+
+    // D_P(s) as the GLSL kernel computes it: the lattice points in the culling box, at most
+    // direct_max_side steps from the centre on each axis (the kernels' glint_pndf_direct).
+    real eval_direct(const texel_footprint<real>& fp, const vec2& s) const {
+        return kernels::glint_pndf_direct(data_.data(), prepare(fp), s, k_);
+    }
+
+    // The brute-force reference: every element whose spatial weight exceeds exp(-24.5) = 2.3e-11
+    // of its peak (a 7-sigma box, no lobe culling, no cap): Eq. 6 summed as it stands.
+    real eval_reference(const texel_footprint<real>& fp, const vec2& s) const {
+        params k = reference_params();
+        return kernels::glint_pndf_direct(data_.data(), prepare(fp, k.cull_u, k.cull_s), s, k);
+    }
+
+    // The footprint's element weight sum_i w_i (the integral of D_P over s, before lobe culling
+    // and the disk's edge), over the same elements as eval_reference.
+    real mass(const texel_footprint<real>& fp) const {
+        params k = reference_params();
+        const frame f = prepare(fp, k.cull_u, k.cull_s);
+        real sum = 0;
+        for_each_in_box(f, k, [&](const element& el, const vec2& u) { sum += kernels::glint_pndf_element_lobe(el, u, f, k).weight; });
+        return sum;
+    }
+
+    // A half vector from the P-NDF: an element i with probability w_i / W among those inside the
+    // cull_u ellipse (two passes over the box, no allocation), then s from its lobe N(mean_i, C_i)
+    // truncated at the cull_s radius. The density of s is exactly pdf(fp, s).
+    pndf_sample<real> sample(const texel_footprint<real>& fp, real u0, real u1, real u2) const {
+        pndf_sample<real> r;
+        const frame f = prepare(fp);
+        params k = sampling_params();
+        const real total = sampling_weight(fp);
+        if (!(total > real(0))) return r;
+        const real target = u0 * total;
+        real acc = 0;
+        bool found = false;
+        element chosen{};
+        vec2 chosen_u(0);
+        for_each_in_box(f, k, [&](const element& el, const vec2& u) {
+            const real w = lobe_weight(el, u, f, k);
+            if (w > 0 && !found) {
+                chosen = el, chosen_u = u;
+                acc += w;
+                found = acc > target;
+            }
+        });
+        const auto l = kernels::glint_pndf_element_lobe(chosen, chosen_u, f, k);
+        // C = sigma_r^2 I + B B^T, its Cholesky factor L, and a radius truncated at cull_s.
+        const real sr = std::max(k_.sigma_r, real(1e-5));
+        const real c11 = sr * sr + l.b.x * l.b.x + l.b.z * l.b.z, c12 = l.b.x * l.b.y + l.b.z * l.b.w, c22 = sr * sr + l.b.y * l.b.y + l.b.w * l.b.w;
+        const real l11 = std::sqrt(c11), l21 = c12 / l11, l22 = std::sqrt(std::max(l.det_c / c11, real(0)));
+        const real rho2 = real(-2) * std::log1p(-u1 * -std::expm1(real(-0.5) * k_.cull_s * k_.cull_s));
+        const real rho = std::sqrt(std::max(rho2, real(0))), phi = real(6.28318530717958647692) * u2;
+        const real z1 = rho * std::cos(phi), z2 = rho * std::sin(phi);
+        r.s = l.mean + vec2(l11 * z1, l21 * z1 + l22 * z2);
+        (void)c22;
+        if (!(r.s.x * r.s.x + r.s.y * r.s.y < real(1))) return pndf_sample<real>{};
+        r.pdf_s = pdf(fp, r.s, total);
+        if (!(r.pdf_s > 0)) return pndf_sample<real>{};
+        r.h = vec3_t<real>(r.s.x, r.s.y, std::sqrt(real(1) - r.s.x * r.s.x - r.s.y * r.s.y));
+        r.pdf_h = r.pdf_s * r.h.z;
+        r.valid = true;
+        return r;
+    }
+
+    // The density of sample()'s s: D_P(s) over the sampled elements (the hierarchy's sum, or the
+    // lattice loop where eval takes the continuum limit) over their weight W (each lobe term
+    // already carries its truncated mass, 1 - exp(-cull_s^2 / 2)). W costs a pass over the box:
+    // callers evaluating many s for one footprint pass sampling_weight(fp) once.
+    real pdf(const texel_footprint<real>& fp, const vec2& s) const { return pdf(fp, s, sampling_weight(fp)); }
+    real pdf(const texel_footprint<real>& fp, const vec2& s, real weight) const {
+        if (!(s.x * s.x + s.y * s.y < real(1)) || !(weight > 0)) return real(0);
+        const frame f = prepare(fp);
+        if (!large_footprint(f)) return (query(cell_of(s), f, s) + query(grid_size_ * grid_size_, f, s)) / weight;
+        params k = sampling_params();
+        real d = 0;
+        for_each_in_box(f, k, [&](const element& el, const vec2& u) { d += kernels::glint_pndf_element(el, u, f, s, k); });
+        return d / weight;
+    }
+    // W: the sum of the tapered weights of the elements sample() draws from.
+    real sampling_weight(const texel_footprint<real>& fp) const {
+        const frame f = prepare(fp);
+        params k = sampling_params();
+        real total = 0;
+        for_each_in_box(f, k, [&](const element& el, const vec2& u) { total += lobe_weight(el, u, f, k); });
+        return total;
+    }
+
+    // XTXW24 Eq. 1 with eval's D_P, Smith G2 (Beckmann at alpha_g()) and the conductor Fresnel.
+    real brdf(const texel_footprint<real>& fp, const vec3_t<real>& wi, const vec3_t<real>& wo, real eta, real k) const {
+        if (!(wi.z > 0) || !(wo.z > 0)) return real(0);
+        const vec3_t<real> h = glm::normalize(wi + wo);
+        if (!(h.z > 0)) return real(0);
+        return kernels::glint_pndf_brdf(eval(fp, vec2(h.x, h.y)), wi, wo, static_cast<int>(ndf::beckmann), vec2(alpha_g_), eta, k);
+    }
+
+    // The elements as the GLSL kernels read them (two vec4 each; upload as std430 vec4[]).
+    const std::vector<vec4>& element_data() const { return data_; }
+    const params& kernel_params() const { return k_; }
+    std::size_t element_count() const { return radius_.size(); }
+    real sigma_h() const { return k_.sigma_h; }
+    real sigma_r() const { return k_.sigma_r; }
+    real spacing() const { return k_.spacing; }
+    // The Smith roughness used by brdf(): sqrt(mean |slope|^2 + 2 sigma_r^2) over the elements.
+    real alpha_g() const { return alpha_g_; }
+    int grid_size() const { return grid_size_; }
+    std::size_t overflow_count() const { return static_cast<std::size_t>(cell_begin_.back() - cell_begin_[cell_begin_.size() - 2]); }
+    // Elements, s-radii, the cells' element lists and their position trees.
+    std::size_t memory_bytes() const {
+        return data_.size() * sizeof(vec4) + radius_.size() * sizeof(real) + cell_begin_.size() * sizeof(std::uint32_t) +
+               refs_.size() * sizeof(std::uint32_t) + node_begin_.size() * sizeof(std::uint32_t) + nodes_.size() * sizeof(box);
+    }
+
+    // Whether a footprint is wide enough for the continuum limit: periodic map, and the periodic
+    // images' Poisson-summation error exp(-2 pi^2 k' / P^2) below 1e-8 on both axes, with
+    // k' = kappa_min / (1 + jmax^2 sigma_h^4 / (kappa_min sigma_r^2)) the width of the sum's
+    // terms in u (sharp lobes moving with the footprint offset narrow it).
+    bool large_footprint(const frame& f) const {
+        if (k_.periodic == 0) return false;
+        const real kmin = std::min(f.kappa.x, f.kappa.y), sr = std::max(k_.sigma_r, real(1e-5)), sh2 = k_.sigma_h * k_.sigma_h;
+        const real kp = kmin / (real(1) + jmax_ * jmax_ * sh2 * sh2 / (kmin * sr * sr));
+        const real p = std::max(period_.x, period_.y);
+        // 2 pi^2 0.94 = 18.55: 2 exp(-18.55) = 1.8e-8 per axis. A culling box wider than 8 periods
+        // (9 images per axis) takes the limit whatever its error, which is then the ripple of sharp
+        // lobes between the periodic images: the exact sum would cost (images)^2 terms per element.
+        return kp >= real(0.94) * p * p || f.extent.x > real(4) * period_.x || f.extent.y > real(4) * period_.y;
+    }
+
+private:
+    struct box {
+        float x0, y0, x1, y1;
+    };
+
+    frame prepare(const texel_footprint<real>& fp, real cull_u, real cull_s) const {
+        const auto& c = fp.covariance;
+        // The determinant in double: xx yy - xy^2 cancels for thin footprints.
+        const double det = static_cast<double>(c[0][0]) * static_cast<double>(c[1][1]) - static_cast<double>(c[1][0]) * static_cast<double>(c[1][0]);
+        return kernels::glint_pndf_prepare(fp.center, vec4(c[0][0], c[1][0], c[1][1], static_cast<real>(std::max(det, 0.0))), k_.sigma_h, cull_u,
+                                           cull_s);
+    }
+    frame prepare(const texel_footprint<real>& fp) const { return prepare(fp, k_.cull_u, k_.cull_s); }
+
+    params reference_params() const {
+        params k = k_;
+        k.cull_u = real(7);
+        k.cull_s = real(0);
+        k.max_side = 1 << 28;
+        return k;
+    }
+    params sampling_params() const {
+        params k = k_;
+        k.max_side = 1 << 28;
+        return k;
+    }
+    static real lobe_weight(const element& el, const vec2& u, const frame& f, const params& k) {
+        const auto l = kernels::glint_pndf_element_lobe(el, u, f, k);
+        return l.mahalanobis_u <= k.cull_u * k.cull_u ? l.weight : real(0);
+    }
+
+    // Calls fn(element, its image position) for every lattice point in the culling box of f.
+    template <class fn_t>
+    void for_each_in_box(const frame& f, const params& k, fn_t&& fn) const {
+        const auto rx = kernels::glint_pndf_axis_range(f.mean.x, f.extent.x, k.spacing, k.max_side);
+        const auto ry = kernels::glint_pndf_axis_range(f.mean.y, f.extent.y, k.spacing, k.max_side);
+        for (int j = ry.x; j <= ry.y; ++j) {
+            if (k.periodic == 0 && (j < 0 || j >= k.height)) continue;
+            const int wj = kernels::glint_pndf_wrap(j, k.height);
+            for (int i = rx.x; i <= rx.y; ++i) {
+                if (k.periodic == 0 && (i < 0 || i >= k.width)) continue;
+                const std::size_t idx = static_cast<std::size_t>(kernels::glint_pndf_wrap(i, k.width) + k.width * wj);
+                const element el{data_[2 * idx], data_[2 * idx + 1]};
+                fn(el, vec2((real(i) + real(0.5)) * k.spacing, (real(j) + real(0.5)) * k.spacing));
+            }
+        }
+    }
+
+    // sum_i marginal_i(s) / (map area): the exact limit of the periodic sum for huge footprints.
+    real continuum_limit(const vec2& s) const {
+        real sum = 0;
+        for (const int c : {cell_of(s), grid_size_ * grid_size_})
+            for (std::uint32_t r = cell_begin_[static_cast<std::size_t>(c)]; r < cell_begin_[static_cast<std::size_t>(c) + 1]; ++r) {
+                const std::size_t e = refs_[r];
+                const element el{data_[2 * e], data_[2 * e + 1]};
+                if (std::fabs(s.x - el.us.z) > radius_[e] || std::fabs(s.y - el.us.w) > radius_[e]) continue;
+                sum += kernels::glint_pndf_element_marginal(el, s, k_);
+            }
+        return sum / (period_.x * period_.y);
+    }
+
+    // The normal-space cell holding s (|s| < 1).
+    int cell_of(const vec2& s) const {
+        const int gs = grid_size_;
+        const int cx = std::clamp(static_cast<int>((s.x + real(1)) / cell_), 0, gs - 1), cy = std::clamp(static_cast<int>((s.y + real(1)) / cell_), 0, gs - 1);
+        return cx + gs * cy;
+    }
+
+    // The elements of cell c that pass the culling, over the periodic images the box touches.
+    real query(int c, const frame& f, const vec2& s) const {
+        const std::uint32_t begin = cell_begin_[static_cast<std::size_t>(c)], end = cell_begin_[static_cast<std::size_t>(c) + 1];
+        if (begin == end) return real(0);
+        const std::uint32_t leaves = (end - begin + 7) / 8;
+        std::uint32_t p2 = 1;
+        while (p2 < leaves) p2 *= 2;
+        const box* tree = nodes_.data() + node_begin_[static_cast<std::size_t>(c)];
+        const real x0 = f.mean.x - f.extent.x, x1 = f.mean.x + f.extent.x, y0 = f.mean.y - f.extent.y, y1 = f.mean.y + f.extent.y;
+        long ix0 = 0, ix1 = 0, iy0 = 0, iy1 = 0;
+        if (k_.periodic) {
+            ix0 = static_cast<long>(std::floor(x0 / period_.x)), ix1 = static_cast<long>(std::floor(x1 / period_.x));
+            iy0 = static_cast<long>(std::floor(y0 / period_.y)), iy1 = static_cast<long>(std::floor(y1 / period_.y));
+        }
+        // The culling ellipse's bounding rectangle along its own axes (a separating-axis test on
+        // them keeps thin footprints from visiting their whole axis-aligned box).
+        const float ax = static_cast<float>(f.axis.x), ay = static_cast<float>(f.axis.y);
+        const float e1 = static_cast<float>(k_.cull_u * std::sqrt(f.kappa.x)), e2 = static_cast<float>(k_.cull_u * std::sqrt(f.kappa.y));
+        real sum = 0;
+        for (long iy = iy0; iy <= iy1; ++iy)
+            for (long ix = ix0; ix <= ix1; ++ix) {
+                const vec2 offset(static_cast<real>(ix) * period_.x, static_cast<real>(iy) * period_.y);
+                const float bx0 = static_cast<float>(x0 - offset.x), bx1 = static_cast<float>(x1 - offset.x);
+                const float by0 = static_cast<float>(y0 - offset.y), by1 = static_cast<float>(y1 - offset.y);
+                const float mx = static_cast<float>(f.mean.x - offset.x), my = static_cast<float>(f.mean.y - offset.y);
+                std::uint32_t stack[64];
+                int top = 0;
+                stack[top++] = 1;
+                while (top > 0) {
+                    const std::uint32_t node = stack[--top];
+                    const box& b = tree[node];
+                    if (b.x0 > bx1 || b.x1 < bx0 || b.y0 > by1 || b.y1 < by0) continue;
+                    const float cx = 0.5f * (b.x0 + b.x1) - mx, cy = 0.5f * (b.y0 + b.y1) - my, hx = 0.5f * (b.x1 - b.x0), hy = 0.5f * (b.y1 - b.y0);
+                    if (std::fabs(cx * ax + cy * ay) > hx * std::fabs(ax) + hy * std::fabs(ay) + e1 * 1.001f + 1e-3f) continue;
+                    if (std::fabs(-cx * ay + cy * ax) > hx * std::fabs(ay) + hy * std::fabs(ax) + e2 * 1.001f + 1e-3f) continue;
+                    if (node >= p2) {
+                        const std::uint32_t first = begin + 8 * (node - p2), last = std::min(end, first + 8);
+                        for (std::uint32_t r = first; r < last; ++r) {
+                            const std::size_t e = refs_[r];
+                            const element el{data_[2 * e], data_[2 * e + 1]};
+                            if (std::fabs(s.x - el.us.z) > radius_[e] || std::fabs(s.y - el.us.w) > radius_[e]) continue;
+                            sum += kernels::glint_pndf_element(el, vec2(el.us.x, el.us.y) + offset, f, s, k_);
+                        }
+                    } else {
+                        stack[top++] = 2 * node;
+                        stack[top++] = 2 * node + 1;
+                    }
+                }
+            }
+        return sum;
+    }
+
+    static std::uint32_t morton(std::uint32_t x, std::uint32_t y) {
+        const auto spread = [](std::uint32_t v) {
+            v &= 0xffffu;
+            v = (v | (v << 8)) & 0x00ff00ffu;
+            v = (v | (v << 4)) & 0x0f0f0f0fu;
+            v = (v | (v << 2)) & 0x33333333u;
+            v = (v | (v << 1)) & 0x55555555u;
+            return v;
+        };
+        return spread(x) | (spread(y) << 1);
+    }
+
+    void build_grid() {
+        const std::size_t n = radius_.size();
+        // Cells about twice the median s-radius, 8 to 256 per side.
+        std::vector<real> r(radius_);
+        std::nth_element(r.begin(), r.begin() + static_cast<std::ptrdiff_t>(n / 2), r.end());
+        const real median = r[n / 2];
+        grid_size_ = std::clamp(static_cast<int>(std::floor(real(2) / (real(2) * median))), 8, 256);
+        cell_ = real(2) / real(grid_size_);
+        const int gs = grid_size_;
+        const std::size_t cells = static_cast<std::size_t>(gs) * static_cast<std::size_t>(gs) + 1;  // + the overflow list
+        const auto range = [&](std::size_t e, int& x0, int& x1, int& y0, int& y1) {
+            const real sx = data_[2 * e].z, sy = data_[2 * e].w, rr = radius_[e];
+            x0 = std::clamp(static_cast<int>(std::floor((sx - rr + 1) / cell_)), 0, gs - 1), x1 = std::clamp(static_cast<int>(std::floor((sx + rr + 1) / cell_)), 0, gs - 1);
+            y0 = std::clamp(static_cast<int>(std::floor((sy - rr + 1) / cell_)), 0, gs - 1), y1 = std::clamp(static_cast<int>(std::floor((sy + rr + 1) / cell_)), 0, gs - 1);
+            return (x1 - x0 + 1) * (y1 - y0 + 1) <= 64;
+        };
+        std::vector<std::uint32_t> count(cells, 0);
+        for (std::size_t e = 0; e < n; ++e) {
+            int x0, x1, y0, y1;
+            if (!range(e, x0, x1, y0, y1)) {
+                ++count[cells - 1];
+                continue;
+            }
+            for (int y = y0; y <= y1; ++y)
+                for (int x = x0; x <= x1; ++x) ++count[static_cast<std::size_t>(x + gs * y)];
+        }
+        cell_begin_.assign(cells + 1, 0);
+        for (std::size_t c = 0; c < cells; ++c) cell_begin_[c + 1] = cell_begin_[c] + count[c];
+        refs_.resize(cell_begin_.back());
+        std::vector<std::uint32_t> fill(cell_begin_.begin(), cell_begin_.end() - 1);
+        // Elements in Morton order of their lattice position, so each cell's list comes out sorted.
+        std::vector<std::uint32_t> order(n);
+        std::iota(order.begin(), order.end(), 0u);
+        std::vector<std::uint32_t> key(n);
+        for (std::size_t e = 0; e < n; ++e)
+            key[e] = morton(static_cast<std::uint32_t>(e % static_cast<std::size_t>(k_.width)), static_cast<std::uint32_t>(e / static_cast<std::size_t>(k_.width)));
+        std::sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) { return key[a] < key[b] || (key[a] == key[b] && a < b); });
+        for (const std::uint32_t e : order) {
+            int x0, x1, y0, y1;
+            if (!range(e, x0, x1, y0, y1)) {
+                refs_[fill[cells - 1]++] = e;
+                continue;
+            }
+            for (int y = y0; y <= y1; ++y)
+                for (int x = x0; x <= x1; ++x) refs_[fill[static_cast<std::size_t>(x + gs * y)]++] = e;
+        }
+        // Position trees: a complete binary tree (heap order, root 1) over runs of 8 per cell.
+        node_begin_.assign(cells, 0);
+        nodes_.clear();
+        const box empty{std::numeric_limits<float>::max(), std::numeric_limits<float>::max(), -std::numeric_limits<float>::max(),
+                        -std::numeric_limits<float>::max()};
+        for (std::size_t c = 0; c < cells; ++c) {
+            const std::uint32_t begin = cell_begin_[c], end = cell_begin_[c + 1];
+            node_begin_[c] = static_cast<std::uint32_t>(nodes_.size());
+            if (begin == end) continue;
+            const std::uint32_t leaves = (end - begin + 7) / 8;
+            std::uint32_t p2 = 1;
+            while (p2 < leaves) p2 *= 2;
+            const std::size_t base = nodes_.size();
+            nodes_.resize(base + 2 * p2, empty);
+            for (std::uint32_t l = 0; l < leaves; ++l) {
+                box b = empty;
+                for (std::uint32_t q = begin + 8 * l; q < std::min(end, begin + 8 * l + 8); ++q) {
+                    const float x = static_cast<float>(data_[2 * refs_[q]].x), y = static_cast<float>(data_[2 * refs_[q]].y);
+                    // Widened by an ulp-scale margin so the float box test never drops a boundary element.
+                    const float m = 1e-3f;
+                    b.x0 = std::min(b.x0, x - m), b.y0 = std::min(b.y0, y - m), b.x1 = std::max(b.x1, x + m), b.y1 = std::max(b.y1, y + m);
+                }
+                nodes_[base + p2 + l] = b;
+            }
+            for (std::uint32_t i = p2 - 1; i >= 1; --i) {
+                const box& a = nodes_[base + 2 * i];
+                const box& b = nodes_[base + 2 * i + 1];
+                nodes_[base + i] = box{std::min(a.x0, b.x0), std::min(a.y0, b.y0), std::max(a.x1, b.x1), std::max(a.y1, b.y1)};
+            }
+        }
+    }
+
+    gaussian_params<real> g_{};
+    params k_{};
+    vec2 period_{0};
+    real alpha_g_ = real(0.1), jmax_ = 0, cell_ = real(0.25);
+    int grid_size_ = 8;
+    std::vector<vec4> data_;         // two per element: (u, s), J
+    std::vector<real> radius_;       // r_i
+    std::vector<std::uint32_t> cell_begin_, refs_, node_begin_;
+    std::vector<box> nodes_;
+};
+
+}  // namespace glint

@@ -42,7 +42,8 @@
 // for each periodic image of the map the footprint's culling box touches, the nodes whose boxes
 // it overlaps: its cost follows the elements whose normals are near s, not the footprint's area.
 // Elements whose s-box would span more than 64 cells (steep groove walls) go to one extra list
-// that every query visits. Footprints so wide that the periodic images blur into the map's
+// that every query visits. Where those lists would be longer than the footprint's lattice (maps
+// whose lobes are as wide as their normals' spread), eval sums the lattice directly instead. Footprints so wide that the periodic images blur into the map's
 // average (large_footprint below: error below 4e-8) use the continuum limit of the periodic sum,
 // sum_i marginal_i(s) / map area, which is exact as the footprint grows (the lobe's mean shift,
 // averaged over the images, adds sigma_h^4 J kappa^-1 J^T to C, which makes it sigma_h^2 J J^T).
@@ -172,11 +173,21 @@ public:
         return p;
     }
 
-    // D_P(s) through the hierarchy (the culling above; equal to eval_direct without its box cap).
+    // D_P(s) through the hierarchy whatever its cost (eval picks it where it pays); the same
+    // elements as eval_direct without its box cap.
+    real eval_hierarchy(const texel_footprint<real>& fp, const vec2& s) const {
+        if (!(s.x * s.x + s.y * s.y < real(1))) return real(0);
+        const frame f = prepare(fp);
+        return query(cell_of(s), f, s) + query(grid_size_ * grid_size_, f, s);
+    }
+
+    // D_P(s): the hierarchy, or the direct sum where that is cheaper, or the continuum limit for
+    // footprints of many periods.
     real eval(const texel_footprint<real>& fp, const vec2& s) const {
         if (!(s.x * s.x + s.y * s.y < real(1))) return real(0);
         const frame f = prepare(fp);
         if (large_footprint(f)) return continuum_limit(s);
+        if (!hierarchy_pays(f, cell_of(s))) return kernels::glint_pndf_direct(data_.data(), f, s, sampling_params());
         return query(cell_of(s), f, s) + query(grid_size_ * grid_size_, f, s);
     }
 
@@ -366,6 +377,21 @@ private:
                 sum += kernels::glint_pndf_element_marginal(el, s, k_);
             }
         return sum / (period_.x * period_.y);
+    }
+
+    // Whether the lists of cell c and the overflow list, over the periodic images the culling box
+    // covers, are shorter than the box's lattice: on maps whose lobes are as wide as their spread
+    // of normals (rough at the texel scale) normal-space culling cannot pay, and the direct loop
+    // (the same elements, so the same sum up to rounding) is cheaper.
+    bool hierarchy_pays(const frame& f, int c) const {
+        const double listed = static_cast<double>(cell_begin_[static_cast<std::size_t>(c) + 1] - cell_begin_[static_cast<std::size_t>(c)]) +
+                              static_cast<double>(overflow_count());
+        const double area = 4.0 * static_cast<double>(f.extent.x) * static_cast<double>(f.extent.y);
+        const double map_area = static_cast<double>(period_.x) * static_cast<double>(period_.y);
+        const double spacing2 = static_cast<double>(k_.spacing) * static_cast<double>(k_.spacing);
+        // The listed elements inside the box (1.5 for the tree's visits per element found, and 256
+        // for its descent), against every lattice point of the box.
+        return 1.5 * listed * area / map_area + 256.0 < area / spacing2;
     }
 
     // The normal-space cell holding s (|s| < 1).

@@ -278,6 +278,10 @@ TEST_CASE("P-NDF: hierarchy equals the direct sum; against brute force within th
             const glm::dvec3 n = glint::pattern_normal(pp, fp.center);
             const glm::dvec2 s = glm::dvec2(n.x, n.y) + 0.02 * glm::dvec2(rnd(i, 45) - 0.5, rnd(i, 46) - 0.5);
             const double h = pndf.eval(fp, s), d = pndf.eval_direct(fp, s);
+            if (sigma * g.cull_u < 127) {
+                const double t = pndf.eval_hierarchy(fp, s);
+                worst_direct = std::max(worst_direct, std::fabs(t - d) / std::max(d, 1e-300));
+            }
             if (sigma * g.cull_u < 127) worst_direct = std::max(worst_direct, std::fabs(h - d) / std::max(d, 1e-300));
             if (sigma < 40) {
                 const double ref = pndf.eval_reference(fp, s);

@@ -1,0 +1,211 @@
+// The microstructure section of the accuracy-versus-time report (glint/gaussian.hpp): the P-NDF's
+// cost against the footprint's size with and without the hierarchy on a 1024^2 noise map, its
+// error against the brute-force reference, build time and memory per texel, elements per texel
+// against the histogram of the microsurface's normals, and the culling radii against error and
+// time, in one run. Writes docs/microstructure.md.
+#include <chrono>
+#include <cmath>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <glint/gaussian.hpp>
+#include <glint/patterns.hpp>
+
+#include "report.hpp"
+
+namespace glint_report {
+
+namespace {
+
+glint::texel_footprint<float> footprint(glm::vec2 c, float a, float b, float t) {
+    const glm::mat2 R(std::cos(t), std::sin(t), -std::sin(t), std::cos(t));
+    glint::texel_footprint<float> f;
+    f.center = c, f.covariance = R * glm::mat2(a * a, 0, 0, b * b) * glm::transpose(R);
+    return f;
+}
+
+float unit(std::uint32_t i, std::uint32_t s) { return glint::unit_from_bits<float>(glint::pcg3d(glm::uvec3(i, s, 0x3e7u)).x); }
+
+// Queries where the P-NDF lives: footprints of sd `sigma` (aspect 1 to 2), s near the normal at
+// the centre.
+struct query {
+    glint::texel_footprint<float> fp;
+    glm::vec2 s;
+};
+std::vector<query> queries(const glint::pattern_params& p, float sigma, int n) {
+    std::vector<query> q;
+    for (int i = 0; i < n; ++i) {
+        const auto u = static_cast<std::uint32_t>(i);
+        const glm::vec2 c(static_cast<float>(p.width) * unit(u, 1), static_cast<float>(p.height) * unit(u, 2));
+        const glm::dvec3 nrm = glint::pattern_normal(p, glm::dvec2(c));
+        q.push_back({footprint(c, sigma, sigma * (0.5f + 0.5f * unit(u, 3)), 3.1f * unit(u, 4)),
+                     glm::vec2(static_cast<float>(nrm.x), static_cast<float>(nrm.y)) + 0.02f * glm::vec2(unit(u, 5) - 0.5f, unit(u, 6) - 0.5f)});
+    }
+    return q;
+}
+
+double seconds_since(std::chrono::steady_clock::time_point t) { return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count(); }
+
+}  // namespace
+
+section microstructure_section(double min_time) {
+    section out;
+    std::ostringstream md;
+    md << "## Normal-mapped microstructure: the footprint P-NDF (glint/gaussian.hpp)\n\n"
+          "CPU, one thread, float. Maps: 1024 x 1024 texels, sigma_r = 0.005, one element per texel, cull_u = 3.5 (tapered), "
+          "cull_s = 4: `flakes` (Voronoi cells of 8 texels, slope sd 0.15: flat lobes, the glinty case) and `noise` (slope rms "
+          "0.1, wavelengths down to 4 texels: rough at the texel scale, every lobe as wide as the normals' spread). Queries: "
+          "footprints of sd sigma_P (aspect 1 to 2, random rotation) at random centres, s within 0.01 of the normal at the centre. "
+          "Brute force: every lattice point of the same culling box (eval_direct, uncapped); reference: 7-sigma box, no lobe "
+          "culling (eval_reference). eval uses the hierarchy where its lists are shorter than the box's lattice, else the "
+          "direct sum.\n\n";
+    glint::pattern_params p;
+    p.width = p.height = 1024, p.seed = 5;
+    glint::gaussian_params<float> g;
+    g.sigma_r = 0.005f, g.direct_max_side = 1 << 20;
+    glint::normal_map map;
+    for (const auto kind : {glint::pattern::flakes, glint::pattern::noise}) {
+        p.kind = kind, p.slope_rms = kind == glint::pattern::flakes ? 0.15 : 0.1;
+        map = glint::make_normal_map(p);
+        auto t0 = std::chrono::steady_clock::now();
+        const auto pndf = glint::gaussian_pndf<float>::build(map, g);
+        const double build = seconds_since(t0);
+        const double texels = static_cast<double>(p.width) * p.height;
+        md << "`" << glint::pattern_name(kind) << "`: build " << fmt(build, "%.2f") << " s (" << fmt(1e9 * build / texels, "%.0f") << " ns per texel); memory "
+           << fmt(static_cast<double>(pndf.memory_bytes()) / 1e6, "%.1f") << " MB (" << fmt(static_cast<double>(pndf.memory_bytes()) / texels, "%.0f")
+           << " bytes per texel: 32 for the element, the rest the s-radii, cell lists and position trees; " << pndf.grid_size() << "^2 normal cells, "
+           << pndf.overflow_count() << " elements in the overflow list).\n\n";
+        md << "| footprint sd (texels) | eval ns / query | brute force ns / query | speed-up | relative L1 error vs reference |\n|---|---|---|---|---|\n";
+        for (const float sigma : {1.0f, 8.0f, 64.0f, 512.0f}) {
+            const int n = sigma >= 512 ? 4 : 32;
+            const auto q = queries(p, sigma, n);
+            const std::string tag = std::string(glint::pattern_name(kind)) + "_" + std::to_string(static_cast<int>(sigma));
+            add("pndf_eval_" + tag, [&pndf, q](std::size_t i) {
+                const auto& x = q[i % q.size()];
+                benchmark::DoNotOptimize(pndf.eval(x.fp, x.s));
+            }, min_time);
+            add("pndf_direct_" + tag, [&pndf, q](std::size_t i) {
+                const auto& x = q[i % q.size()];
+                benchmark::DoNotOptimize(pndf.eval_direct(x.fp, x.s));
+            }, sigma >= 512 ? 1e-3 : min_time);
+            const auto ns = run_all();
+            double l1 = 0, norm = 0;
+            const int m = sigma >= 512 ? 2 : sigma >= 64 ? 6 : 32;
+            for (int i = 0; i < m; ++i) {
+                const auto& x = q[static_cast<std::size_t>(i)];
+                const double ref = static_cast<double>(pndf.eval_reference(x.fp, x.s));
+                l1 += std::fabs(static_cast<double>(pndf.eval(x.fp, x.s)) - ref), norm += ref;
+            }
+            const double h = ns.at("pndf_eval_" + tag), d = ns.at("pndf_direct_" + tag);
+            md << "| " << sigma << " | " << fmt(h, "%.0f") << " | " << fmt(d, "%.0f") << " | " << fmt(d / h, "%.1f") << "x | " << fmt(l1 / norm) << " (" << m
+               << " queries) |\n";
+            out.csv_rows += "pndf," + std::string(glint::pattern_name(kind)) + " sigma_P=" + fmt(sigma) + ",float,relative L1 vs reference," + fmt(l1 / norm) +
+                            "," + fmt(h) + "," + fmt(h / d) + ",brute force\n";
+        }
+        md << "\n";
+    }
+    const auto pndf = glint::gaussian_pndf<float>::build(map, g);  // noise, for the culling rows below
+    // Elements per texel against the histogram of the interpolated normals (sigma_r = 1e-4).
+    md << "\nElements per texel side against the microsurface's own normal distribution: L1 between the P-NDF's bin masses and "
+          "the histogram of 2e6 bicubic normals under a footprint of sd 12 x 8 texels (64^2 noise map, slope rms 0.08, "
+          "sigma_r = 1e-4, 32^2 bins over [-0.32, 0.32]^2; the test `P-NDF: a large footprint...` in tests/stat), with the "
+          "time per query at that footprint:\n\n| elements per texel side | L1 vs histogram | ns / query | memory bytes per texel |\n|---|---|---|---|\n";
+    {
+        glint::pattern_params s = p;
+        s.kind = glint::pattern::noise, s.width = s.height = 64, s.slope_rms = 0.08, s.seed = 1;
+        const glint::normal_map small = glint::make_normal_map(s);
+        const auto fp = footprint({30.3f, 21.7f}, 12, 8, 0.5f);
+        const int bins = 32;
+        const double lo = -0.32, w = 0.64 / bins;
+        std::vector<double> hist(bins * bins, 0.0);
+        const std::size_t n = 2000000;
+        const glm::dmat2 cov(fp.covariance);
+        const glm::dmat2 L(std::sqrt(cov[0][0]), cov[0][1] / std::sqrt(cov[0][0]), 0, std::sqrt(cov[1][1] - cov[0][1] * cov[0][1] / cov[0][0]));
+        const auto bin_of = [&](glm::dvec2 v) {
+            const int bx = static_cast<int>(std::floor((v.x - lo) / w)), by = static_cast<int>(std::floor((v.y - lo) / w));
+            return bx >= 0 && bx < bins && by >= 0 && by < bins ? bx + bins * by : -1;
+        };
+        for (std::uint32_t i = 0; i < n; ++i) {
+            const double r = std::sqrt(-2 * std::log(glint::open_unit_from_bits<double>(glint::pcg3d(glm::uvec3(i, 1u, 0x9a55u)).x)));
+            const double phi = 6.283185307179586 * glint::open_unit_from_bits<double>(glint::pcg3d(glm::uvec3(i, 2u, 0x9a55u)).x);
+            const int b = bin_of(small.bicubic(glm::dvec2(fp.center) + L * glm::dvec2(r * std::cos(phi), r * std::sin(phi))).s);
+            if (b >= 0) hist[static_cast<std::size_t>(b)] += 1.0 / static_cast<double>(n);
+        }
+        for (const int r : {1, 2, 4}) {
+            glint::gaussian_params<double> gd;
+            gd.sigma_r = 1e-4, gd.elements_per_texel = r;
+            const auto pd = glint::gaussian_pndf<double>::build(small, gd);
+            // Bin masses: the P-NDF's lobes integrated by 16 x 16 stratified points each (as the test).
+            using k = glint::detail::glsl::kernels<double>;
+            auto kp = pd.kernel_params();
+            kp.cull_u = 7, kp.cull_s = 0;
+            const auto f = k::glint_pndf_prepare(glm::dvec2(fp.center), {cov[0][0], cov[1][0], cov[1][1], glm::determinant(cov)}, kp.sigma_h, kp.cull_u,
+                                                 kp.cull_s);
+            double z[16];
+            for (int j = 0; j < 16; ++j) z[j] = glint::normal_quantile((j + 0.5) / 16);
+            std::vector<double> model(bins * bins, 0.0);
+            const auto& data = pd.element_data();
+            const glm::dvec2 centre(fp.center);
+            for (int j = static_cast<int>(std::floor((centre.y - f.extent.y) / kp.spacing)); j * kp.spacing < centre.y + f.extent.y; ++j)
+                for (int i = static_cast<int>(std::floor((centre.x - f.extent.x) / kp.spacing)); i * kp.spacing < centre.x + f.extent.x; ++i) {
+                    const int wi = ((i % kp.width) + kp.width) % kp.width, wj = ((j % kp.height) + kp.height) % kp.height;
+                    const std::size_t e = static_cast<std::size_t>(wi + kp.width * wj);
+                    const typename k::glint_gaussian_element el{data[2 * e], data[2 * e + 1]};
+                    const auto lobe = k::glint_pndf_element_lobe(el, {(i + 0.5) * kp.spacing, (j + 0.5) * kp.spacing}, f, kp);
+                    if (!(lobe.weight > 1e-14)) continue;
+                    const double sr2 = kp.sigma_r * kp.sigma_r, c11 = sr2 + lobe.b.x * lobe.b.x + lobe.b.z * lobe.b.z;
+                    const double l21 = (lobe.b.x * lobe.b.y + lobe.b.z * lobe.b.w) / std::sqrt(c11), l22 = std::sqrt(std::max(lobe.det_c / c11, 0.0));
+                    for (int a = 0; a < 16; ++a)
+                        for (int b = 0; b < 16; ++b) {
+                            const int bin = bin_of(lobe.mean + glm::dvec2(std::sqrt(c11) * z[a], l21 * z[a] + l22 * z[b]));
+                            if (bin >= 0) model[static_cast<std::size_t>(bin)] += lobe.weight / 256;
+                        }
+                }
+            double l1 = 0;
+            for (std::size_t q = 0; q < hist.size(); ++q) l1 += std::fabs(hist[q] - model[q]);
+            glint::gaussian_params<float> gf;
+            gf.sigma_r = 1e-4f, gf.elements_per_texel = r;
+            const auto pf = glint::gaussian_pndf<float>::build(small, gf);
+            const auto q = queries(s, 12.0f, 32);
+            add("pndf_r" + std::to_string(r), [&pf, q](std::size_t i) {
+                const auto& x = q[i % q.size()];
+                benchmark::DoNotOptimize(pf.eval(x.fp, x.s));
+            }, min_time);
+            const double t = run_all().at("pndf_r" + std::to_string(r));
+            md << "| " << r << " | " << fmt(l1) << " | " << fmt(t, "%.0f") << " | "
+               << fmt(static_cast<double>(pf.memory_bytes()) / (64.0 * 64.0), "%.0f") << " |\n";
+            out.csv_rows += "pndf,elements per texel " + std::to_string(r) + ",double,L1 vs normal histogram," + fmt(l1) + "," + fmt(t) + ",,\n";
+        }
+    }
+    // Culling radii against error and time (sigma_P = 8 texels).
+    md << "\nCulling radii (footprint sd 8 texels, the 1024^2 noise map; error: relative L1 against the reference over 32 queries):\n\n"
+          "| cull_u (taper from cull_u - 1) | cull_s | relative L1 error | ns / query |\n|---|---|---|---|\n";
+    const auto q8 = queries(p, 8.0f, 32);
+    std::vector<double> ref;
+    for (const auto& x : q8) ref.push_back(static_cast<double>(pndf.eval_reference(x.fp, x.s)));
+    for (const float cu : {2.5f, 3.0f, 3.5f, 4.0f, 5.0f})
+        for (const float cs : {3.0f, 4.0f, 5.0f}) {
+            if (cs != 4.0f && cu != 3.5f) continue;
+            glint::gaussian_params<float> gc = g;
+            gc.cull_u = cu, gc.cull_s = cs;
+            const auto pc = glint::gaussian_pndf<float>::build(map, gc);
+            double l1 = 0, norm = 0;
+            for (std::size_t i = 0; i < q8.size(); ++i) l1 += std::fabs(static_cast<double>(pc.eval(q8[i].fp, q8[i].s)) - ref[i]), norm += ref[i];
+            const std::string name = "pndf_cull_" + fmt(cu) + "_" + fmt(cs);
+            add(name, [&pc, &q8](std::size_t i) {
+                const auto& x = q8[i % q8.size()];
+                benchmark::DoNotOptimize(pc.eval(x.fp, x.s));
+            }, min_time);
+            const double t = run_all().at(name);
+            md << "| " << fmt(cu) << " | " << fmt(cs) << " | " << fmt(l1 / norm) << " | " << fmt(t, "%.0f") << " |\n";
+            out.csv_rows += "pndf,cull_u=" + fmt(cu) + " cull_s=" + fmt(cs) + ",float,relative L1 vs reference," + fmt(l1 / norm) + "," + fmt(t) + ",,\n";
+        }
+    md << "\n";
+    out.markdown = md.str();
+    out.files["microstructure.md"] = "# Normal-mapped microstructure: measured\n\nGenerated by `glint_report --docs docs` (bench/report_microstructure.cpp); "
+                                     "do not edit by hand.\n\n" + out.markdown;
+    return out;
+}
+
+}  // namespace glint_report

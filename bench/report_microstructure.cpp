@@ -12,6 +12,7 @@
 #include <glint/gaussian.hpp>
 #include <glint/patterns.hpp>
 
+#include "../tests/support/pndf_histogram.hpp"
 #include "report.hpp"
 
 namespace glint_report {
@@ -116,54 +117,13 @@ section microstructure_section(double min_time) {
         s.kind = glint::pattern::noise, s.width = s.height = 64, s.slope_rms = 0.08, s.seed = 1;
         const glint::normal_map small = glint::make_normal_map(s);
         const auto fp = footprint({30.3f, 21.7f}, 12, 8, 0.5f);
-        const int bins = 32;
-        const double lo = -0.32, w = 0.64 / bins;
-        std::vector<double> hist(bins * bins, 0.0);
-        const std::size_t n = 2000000;
-        const glm::dmat2 cov(fp.covariance);
-        const glm::dmat2 L(std::sqrt(cov[0][0]), cov[0][1] / std::sqrt(cov[0][0]), 0, std::sqrt(cov[1][1] - cov[0][1] * cov[0][1] / cov[0][0]));
-        const auto bin_of = [&](glm::dvec2 v) {
-            const int bx = static_cast<int>(std::floor((v.x - lo) / w)), by = static_cast<int>(std::floor((v.y - lo) / w));
-            return bx >= 0 && bx < bins && by >= 0 && by < bins ? bx + bins * by : -1;
-        };
-        for (std::uint32_t i = 0; i < n; ++i) {
-            const double r = std::sqrt(-2 * std::log(glint::open_unit_from_bits<double>(glint::pcg3d(glm::uvec3(i, 1u, 0x9a55u)).x)));
-            const double phi = 6.283185307179586 * glint::open_unit_from_bits<double>(glint::pcg3d(glm::uvec3(i, 2u, 0x9a55u)).x);
-            const int b = bin_of(small.bicubic(glm::dvec2(fp.center) + L * glm::dvec2(r * std::cos(phi), r * std::sin(phi))).s);
-            if (b >= 0) hist[static_cast<std::size_t>(b)] += 1.0 / static_cast<double>(n);
-        }
+        const glint::texel_footprint<double> fpd{glm::dvec2(fp.center), glm::dmat2(fp.covariance)};
+        const glint_test::normal_bins bins;
+        const auto hist = glint_test::normal_histogram(small, fpd, bins, 2000000);
         for (const int r : {1, 2, 4}) {
             glint::gaussian_params<double> gd;
             gd.sigma_r = 1e-4, gd.elements_per_texel = r;
-            const auto pd = glint::gaussian_pndf<double>::build(small, gd);
-            // Bin masses: the P-NDF's lobes integrated by 16 x 16 stratified points each (as the test).
-            using k = glint::detail::glsl::kernels<double>;
-            auto kp = pd.kernel_params();
-            kp.cull_u = 7, kp.cull_s = 0;
-            const auto f = k::glint_pndf_prepare(glm::dvec2(fp.center), {cov[0][0], cov[1][0], cov[1][1], glm::determinant(cov)}, kp.sigma_h, kp.cull_u,
-                                                 kp.cull_s);
-            double z[16];
-            for (int j = 0; j < 16; ++j) z[j] = glint::normal_quantile((j + 0.5) / 16);
-            std::vector<double> model(bins * bins, 0.0);
-            const auto& data = pd.element_data();
-            const glm::dvec2 centre(fp.center);
-            for (int j = static_cast<int>(std::floor((centre.y - f.extent.y) / kp.spacing)); j * kp.spacing < centre.y + f.extent.y; ++j)
-                for (int i = static_cast<int>(std::floor((centre.x - f.extent.x) / kp.spacing)); i * kp.spacing < centre.x + f.extent.x; ++i) {
-                    const int wi = ((i % kp.width) + kp.width) % kp.width, wj = ((j % kp.height) + kp.height) % kp.height;
-                    const std::size_t e = static_cast<std::size_t>(wi + kp.width * wj);
-                    const typename k::glint_gaussian_element el{data[2 * e], data[2 * e + 1]};
-                    const auto lobe = k::glint_pndf_element_lobe(el, {(i + 0.5) * kp.spacing, (j + 0.5) * kp.spacing}, f, kp);
-                    if (!(lobe.weight > 1e-14)) continue;
-                    const double sr2 = kp.sigma_r * kp.sigma_r, c11 = sr2 + lobe.b.x * lobe.b.x + lobe.b.z * lobe.b.z;
-                    const double l21 = (lobe.b.x * lobe.b.y + lobe.b.z * lobe.b.w) / std::sqrt(c11), l22 = std::sqrt(std::max(lobe.det_c / c11, 0.0));
-                    for (int a = 0; a < 16; ++a)
-                        for (int b = 0; b < 16; ++b) {
-                            const int bin = bin_of(lobe.mean + glm::dvec2(std::sqrt(c11) * z[a], l21 * z[a] + l22 * z[b]));
-                            if (bin >= 0) model[static_cast<std::size_t>(bin)] += lobe.weight / 256;
-                        }
-                }
-            double l1 = 0;
-            for (std::size_t q = 0; q < hist.size(); ++q) l1 += std::fabs(hist[q] - model[q]);
+            const double l1 = glint_test::l1_distance(hist, glint_test::pndf_bin_masses(glint::gaussian_pndf<double>::build(small, gd), fpd, bins));
             glint::gaussian_params<float> gf;
             gf.sigma_r = 1e-4f, gf.elements_per_texel = r;
             const auto pf = glint::gaussian_pndf<float>::build(small, gf);

@@ -17,6 +17,8 @@
 #include <glint/testing/directional.hpp>
 #include <glint/testing/stats.hpp>
 
+#include "../support/pndf_histogram.hpp"
+
 namespace gt = glint::testing;
 
 namespace {
@@ -59,64 +61,21 @@ drawn draw(const glint::gaussian_pndf<double>& pndf, const glint::texel_footprin
 TEST_CASE("P-NDF: a large footprint with small sigma_r converges to the histogram of the interpolated normals") {
     // sigma_r = 1e-4, footprint sd 12 x 8 texels on a 64-texel noise map; 32 x 32 bins over
     // s in [-0.32, 0.32]^2. The histogram: 2e6 points u ~ G_P, s = the bicubic normal's xy part
-    // (its L1 noise is about 0.01). The P-NDF's bin masses: D_P is a sum of Gaussian lobes (kernels/
-    // gaussian.glsl); each lobe is integrated over the bins exactly enough by 16 x 16 stratified
-    // points through its Cholesky factor (lobes are as thin as sigma_r, far below a bin). The
+    // (its L1 noise is about 0.01); the P-NDF's bin masses: tests/support/pndf_histogram.hpp. The
     // element model blurs each texel's normals by sigma_h instead of the texel's extent, so the
     // agreement improves with the elements per texel: L1 below 0.05 at 4 per texel side.
-    using k = glint::detail::glsl::kernels<double>;
     glint::pattern_params pp;
     pp.kind = glint::pattern::noise, pp.width = pp.height = 64, pp.slope_rms = 0.08;
     const glint::normal_map map = glint::make_normal_map(pp);
     const auto fp = footprint({30.3, 21.7}, 12, 8, 0.5);
-    const int bins = 32;
-    const double lo = -0.32, w = 0.64 / bins;
-    const auto bin_of = [&](glm::dvec2 s) {
-        const int bx = static_cast<int>(std::floor((s.x - lo) / w)), by = static_cast<int>(std::floor((s.y - lo) / w));
-        return bx >= 0 && bx < bins && by >= 0 && by < bins ? bx + bins * by : -1;
-    };
-    std::vector<double> hist(bins * bins, 0.0);
+    const glint_test::normal_bins bins;
     const std::size_t n = 2000000;
-    const glm::dmat2 L(std::sqrt(fp.covariance[0][0]), fp.covariance[0][1] / std::sqrt(fp.covariance[0][0]), 0,
-                       std::sqrt(fp.covariance[1][1] - fp.covariance[0][1] * fp.covariance[0][1] / fp.covariance[0][0]));
-    for (std::uint32_t i = 0; i < n; ++i) {
-        const double r = std::sqrt(-2 * std::log(uniform(i, 1))), phi = 6.283185307179586 * uniform(i, 2);
-        const int b = bin_of(map.bicubic(fp.center + L * glm::dvec2(r * std::cos(phi), r * std::sin(phi))).s);
-        if (b >= 0) hist[static_cast<std::size_t>(b)] += 1.0 / static_cast<double>(n);
-    }
-    double z[16];
-    for (int j = 0; j < 16; ++j) z[j] = glint::normal_quantile((j + 0.5) / 16);
+    const auto hist = glint_test::normal_histogram(map, fp, bins, n);
     double l1[3];
     for (int r = 1, idx = 0; r <= 4; r *= 2, ++idx) {
         glint::gaussian_params<double> g;
         g.sigma_r = 1e-4, g.elements_per_texel = r;
-        const auto pndf = glint::gaussian_pndf<double>::build(map, g);
-        auto kp = pndf.kernel_params();
-        kp.cull_u = 7, kp.cull_s = 0;
-        const auto& c = fp.covariance;
-        const auto f = k::glint_pndf_prepare(fp.center, {c[0][0], c[1][0], c[1][1], glm::determinant(c)}, kp.sigma_h, kp.cull_u, kp.cull_s);
-        std::vector<double> model(bins * bins, 0.0);
-        const auto& data = pndf.element_data();
-        const int lw = kp.width;
-        // Every element image within the 7-sigma box (the map is periodic; the box spans < 2 periods).
-        for (int j = static_cast<int>(std::floor((fp.center.y - f.extent.y) / kp.spacing)); j * kp.spacing < fp.center.y + f.extent.y; ++j)
-            for (int i = static_cast<int>(std::floor((fp.center.x - f.extent.x) / kp.spacing)); i * kp.spacing < fp.center.x + f.extent.x; ++i) {
-                const int wi = ((i % lw) + lw) % lw, wj = ((j % kp.height) + kp.height) % kp.height;
-                const std::size_t e = static_cast<std::size_t>(wi + lw * wj);
-                const typename k::glint_gaussian_element el{data[2 * e], data[2 * e + 1]};
-                const auto lobe = k::glint_pndf_element_lobe(el, {(i + 0.5) * kp.spacing, (j + 0.5) * kp.spacing}, f, kp);
-                if (!(lobe.weight > 1e-14)) continue;
-                const double sr2 = kp.sigma_r * kp.sigma_r;
-                const double c11 = sr2 + lobe.b.x * lobe.b.x + lobe.b.z * lobe.b.z, c12 = lobe.b.x * lobe.b.y + lobe.b.z * lobe.b.w;
-                const double l11 = std::sqrt(c11), l21 = c12 / l11, l22 = std::sqrt(std::max(lobe.det_c / c11, 0.0));
-                for (int a = 0; a < 16; ++a)
-                    for (int b = 0; b < 16; ++b) {
-                        const int bin = bin_of(lobe.mean + glm::dvec2(l11 * z[a], l21 * z[a] + l22 * z[b]));
-                        if (bin >= 0) model[static_cast<std::size_t>(bin)] += lobe.weight / 256;
-                    }
-            }
-        l1[idx] = 0;
-        for (std::size_t q = 0; q < hist.size(); ++q) l1[idx] += std::fabs(hist[q] - model[q]);
+        l1[idx] = glint_test::l1_distance(hist, glint_test::pndf_bin_masses(glint::gaussian_pndf<double>::build(map, g), fp, bins));
         MESSAGE(r << " elements per texel side: L1 between the P-NDF and the histogram of " << n << " normals: " << l1[idx]);
     }
     CHECK(l1[1] < l1[0]);

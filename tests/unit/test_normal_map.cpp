@@ -11,18 +11,12 @@
 #include <glint/normal_map.hpp>
 #include <glint/patterns.hpp>
 
+#include "../support/errors.hpp"
+
 namespace {
 
-std::string error_of(const std::function<void()>& f) {
-    try {
-        f();
-    } catch (const glint::error& e) {
-        return e.what();
-    }
-    return "";
-}
-
-bool contains(const std::string& s, const std::string& part) { return s.find(part) != std::string::npos; }
+using glint_test::contains;
+using glint_test::error_of;
 
 std::vector<glm::vec3> flat(int w, int h) { return std::vector<glm::vec3>(static_cast<std::size_t>(w * h), glm::vec3(0, 0, 1)); }
 

@@ -19,20 +19,14 @@
 #include <glint/io/normal_map.hpp>
 #include <glint/patterns.hpp>
 
+#include "../support/errors.hpp"
+
 namespace {
 
 const std::string tmp = GLINT_TEST_TMP_DIR;
 
-std::string error_of(const std::function<void()>& f) {
-    try {
-        f();
-    } catch (const glint::error& e) {
-        return e.what();
-    }
-    return "";
-}
-
-bool contains(const std::string& s, const std::string& part) { return s.find(part) != std::string::npos; }
+using glint_test::contains;
+using glint_test::error_of;
 
 std::vector<std::uint8_t> read_bytes(const std::string& path) {
     std::ifstream in(path, std::ios::binary);

@@ -131,7 +131,6 @@ public:
         if (lw * lh > (1L << 26)) throw error(what + "more than 2^26 elements (" + std::to_string(lw) + " x " + std::to_string(lh) + ")");
         gaussian_pndf p;
         const real h = real(1) / real(g.elements_per_texel);
-        p.g_ = g;
         p.k_.sigma_h = h / std::sqrt(real(8) * std::log(real(2)));
         p.k_.sigma_r = g.sigma_r;
         p.k_.spacing = h;
@@ -187,7 +186,7 @@ public:
         if (!(s.x * s.x + s.y * s.y < real(1))) return real(0);
         const frame f = prepare(fp);
         if (large_footprint(f)) return continuum_limit(s);
-        if (!hierarchy_pays(f, cell_of(s))) return kernels::glint_pndf_direct(data_.data(), f, s, sampling_params());
+        if (!hierarchy_pays(f, cell_of(s))) return direct_sum(f, s, sampling_params());
         return query(cell_of(s), f, s) + query(grid_size_ * grid_size_, f, s);
     }
 
@@ -210,7 +209,7 @@ public:
         params k = reference_params();
         const frame f = prepare(fp, k.cull_u, k.cull_s);
         real sum = 0;
-        for_each_in_box(f, k, [&](const element& el, const vec2& u) { sum += kernels::glint_pndf_element_lobe(el, u, f, k).weight; });
+        for_each_in_box(f, k, [&](std::size_t, const element&, const vec2& u) { sum += kernels::glint_pndf_element_weight(u, f, k); });
         return sum;
     }
 
@@ -228,8 +227,8 @@ public:
         bool found = false;
         element chosen{};
         vec2 chosen_u(0);
-        for_each_in_box(f, k, [&](const element& el, const vec2& u) {
-            const real w = lobe_weight(el, u, f, k);
+        for_each_in_box(f, k, [&](std::size_t, const element& el, const vec2& u) {
+            const real w = kernels::glint_pndf_element_weight(u, f, k);
             if (w > 0 && !found) {
                 chosen = el, chosen_u = u;
                 acc += w;
@@ -239,13 +238,12 @@ public:
         const auto l = kernels::glint_pndf_element_lobe(chosen, chosen_u, f, k);
         // C = sigma_r^2 I + B B^T, its Cholesky factor L, and a radius truncated at cull_s.
         const real sr = std::max(k_.sigma_r, real(1e-5));
-        const real c11 = sr * sr + l.b.x * l.b.x + l.b.z * l.b.z, c12 = l.b.x * l.b.y + l.b.z * l.b.w, c22 = sr * sr + l.b.y * l.b.y + l.b.w * l.b.w;
+        const real c11 = sr * sr + l.b.x * l.b.x + l.b.z * l.b.z, c12 = l.b.x * l.b.y + l.b.z * l.b.w;
         const real l11 = std::sqrt(c11), l21 = c12 / l11, l22 = std::sqrt(std::max(l.det_c / c11, real(0)));
         const real rho2 = real(-2) * std::log1p(-u1 * -std::expm1(real(-0.5) * k_.cull_s * k_.cull_s));
         const real rho = std::sqrt(std::max(rho2, real(0))), phi = real(6.28318530717958647692) * u2;
         const real z1 = rho * std::cos(phi), z2 = rho * std::sin(phi);
         r.s = l.mean + vec2(l11 * z1, l21 * z1 + l22 * z2);
-        (void)c22;
         if (!(r.s.x * r.s.x + r.s.y * r.s.y < real(1))) return pndf_sample<real>{};
         r.pdf_s = pdf(fp, r.s, total);
         if (!(r.pdf_s > 0)) return pndf_sample<real>{};
@@ -255,26 +253,23 @@ public:
         return r;
     }
 
-    // The density of sample()'s s: D_P(s) over the sampled elements (the hierarchy's sum, or the
-    // lattice loop where eval takes the continuum limit) over their weight W (each lobe term
+    // The density of sample()'s s: D_P(s) over the sampled elements (the hierarchy's sum or the
+    // uncapped lattice loop, never the continuum limit) over their weight W (each lobe term
     // already carries its truncated mass, 1 - exp(-cull_s^2 / 2)). W costs a pass over the box:
     // callers evaluating many s for one footprint pass sampling_weight(fp) once.
     real pdf(const texel_footprint<real>& fp, const vec2& s) const { return pdf(fp, s, sampling_weight(fp)); }
     real pdf(const texel_footprint<real>& fp, const vec2& s, real weight) const {
         if (!(s.x * s.x + s.y * s.y < real(1)) || !(weight > 0)) return real(0);
         const frame f = prepare(fp);
-        if (!large_footprint(f)) return (query(cell_of(s), f, s) + query(grid_size_ * grid_size_, f, s)) / weight;
-        params k = sampling_params();
-        real d = 0;
-        for_each_in_box(f, k, [&](const element& el, const vec2& u) { d += kernels::glint_pndf_element(el, u, f, s, k); });
-        return d / weight;
+        if (!large_footprint(f) && hierarchy_pays(f, cell_of(s))) return (query(cell_of(s), f, s) + query(grid_size_ * grid_size_, f, s)) / weight;
+        return direct_sum(f, s, sampling_params()) / weight;
     }
     // W: the sum of the tapered weights of the elements sample() draws from.
     real sampling_weight(const texel_footprint<real>& fp) const {
         const frame f = prepare(fp);
         params k = sampling_params();
         real total = 0;
-        for_each_in_box(f, k, [&](const element& el, const vec2& u) { total += lobe_weight(el, u, f, k); });
+        for_each_in_box(f, k, [&](std::size_t, const element&, const vec2& u) { total += kernels::glint_pndf_element_weight(u, f, k); });
         return total;
     }
 
@@ -344,12 +339,8 @@ private:
         k.max_side = 1 << 28;
         return k;
     }
-    static real lobe_weight(const element& el, const vec2& u, const frame& f, const params& k) {
-        const auto l = kernels::glint_pndf_element_lobe(el, u, f, k);
-        return l.mahalanobis_u <= k.cull_u * k.cull_u ? l.weight : real(0);
-    }
 
-    // Calls fn(element, its image position) for every lattice point in the culling box of f.
+    // Calls fn(index, element, its image position) for every lattice point in the culling box of f.
     template <class fn_t>
     void for_each_in_box(const frame& f, const params& k, fn_t&& fn) const {
         const auto rx = kernels::glint_pndf_axis_range(f.mean.x, f.extent.x, k.spacing, k.max_side);
@@ -361,9 +352,20 @@ private:
                 if (k.periodic == 0 && (i < 0 || i >= k.width)) continue;
                 const std::size_t idx = static_cast<std::size_t>(kernels::glint_pndf_wrap(i, k.width) + k.width * wj);
                 const element el{data_[2 * idx], data_[2 * idx + 1]};
-                fn(el, vec2((real(i) + real(0.5)) * k.spacing, (real(j) + real(0.5)) * k.spacing));
+                fn(idx, el, vec2((real(i) + real(0.5)) * k.spacing, (real(j) + real(0.5)) * k.spacing));
             }
         }
+    }
+
+    // The lattice loop of glint_pndf_direct (the same elements and terms), skipping first the
+    // elements whose s-box excludes s.
+    real direct_sum(const frame& f, const vec2& s, const params& k) const {
+        real sum = 0;
+        for_each_in_box(f, k, [&](std::size_t e, const element& el, const vec2& u) {
+            if (std::fabs(s.x - el.us.z) > radius_[e] || std::fabs(s.y - el.us.w) > radius_[e]) return;
+            sum += kernels::glint_pndf_element(el, u, f, s, k);
+        });
+        return sum;
     }
 
     // sum_i marginal_i(s) / (map area): the exact limit of the periodic sum for huge footprints.
@@ -543,7 +545,6 @@ private:
         }
     }
 
-    gaussian_params<real> g_{};
     params k_{};
     vec2 period_{0};
     real alpha_g_ = real(0.1), jmax_ = 0, cell_ = real(0.25);

@@ -152,10 +152,23 @@ struct glint_pndf_lobe {
     real mahalanobis_u;  // sum e_k^2 / kappa_k
 };
 
+// The footprint offset e = R^T (mu - u_i) of an element at u_i.
+GLINT_FN vec2 glint_pndf_offset(vec2 u_i, glint_pndf_frame f) {
+    vec2 d = f.mean - u_i;
+    return vec2(f.axis.x * d.x + f.axis.y * d.y, -f.axis.y * d.x + f.axis.x * d.y);
+}
+
+// The tapered spatial weight w_i of an element at u_i (0 outside the culling ellipse).
+GLINT_FN real glint_pndf_element_weight(vec2 u_i, glint_pndf_frame f, glint_pndf_params p) {
+    vec2 e = glint_pndf_offset(u_i, f);
+    real m = e.x * e.x / f.kappa.x + e.y * e.y / f.kappa.y;
+    if (p.cull_u > real(0) && m > p.cull_u * p.cull_u) return real(0);
+    return p.area * f.norm * exp(real(-0.5) * m) * glint_pndf_window(m, p.cull_u);
+}
+
 GLINT_FN glint_pndf_lobe glint_pndf_element_lobe(glint_gaussian_element el, vec2 u_i, glint_pndf_frame f, glint_pndf_params p) {
     glint_pndf_lobe l;
-    vec2 d = f.mean - u_i;
-    vec2 e = vec2(f.axis.x * d.x + f.axis.y * d.y, -f.axis.y * d.x + f.axis.x * d.y);
+    vec2 e = glint_pndf_offset(u_i, f);
     l.mahalanobis_u = e.x * e.x / f.kappa.x + e.y * e.y / f.kappa.y;
     l.weight = p.area * f.norm * exp(real(-0.5) * l.mahalanobis_u) * glint_pndf_window(l.mahalanobis_u, p.cull_u);
     // J R: columns J r1, J r2 with r1 = axis, r2 = perp(axis).

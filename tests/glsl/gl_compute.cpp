@@ -7,6 +7,10 @@
 
 #include <cmath>
 #include <cstdlib>
+#include <cstring>
+#include <string>
+
+#include <dlfcn.h>
 #include <stdexcept>
 
 #include <glint/glsl.hpp>
@@ -55,9 +59,30 @@ struct gl_compute::impl {
     }
 };
 
+#if defined(__SANITIZE_ADDRESS__)
+namespace {
+// eglTerminate unloads Mesa's DRI driver, after which LeakSanitizer cannot name the module of the
+// driver's own leftovers, and the suppressions below cannot match them. Loading it first with
+// RTLD_NODELETE keeps it mapped to the end (Mesa's dlopen then finds the same object).
+void keep_dri_driver_loaded() {
+    std::string dirs = std::getenv("LIBGL_DRIVERS_PATH") ? std::getenv("LIBGL_DRIVERS_PATH") : "";
+    dirs += ":/usr/lib/x86_64-linux-gnu/dri:/usr/lib/aarch64-linux-gnu/dri:/usr/lib/dri";
+    for (std::size_t start = 0; start < dirs.size();) {
+        const std::size_t end = std::min(dirs.find(':', start), dirs.size());
+        const std::string path = dirs.substr(start, end - start) + "/swrast_dri.so";
+        if (end > start && dlopen(path.c_str(), RTLD_NOW | RTLD_GLOBAL | RTLD_NODELETE)) return;
+        start = end + 1;
+    }
+}
+}  // namespace
+#endif
+
 gl_compute::gl_compute() : impl_(new impl) {
     // Software rendering on the CPU: the same llvmpipe here and in CI, whatever GPU is present.
     setenv("LIBGL_ALWAYS_SOFTWARE", "1", 1);
+#if defined(__SANITIZE_ADDRESS__)
+    keep_dri_driver_loaded();
+#endif
     impl& g = *impl_;
     g.display = eglGetPlatformDisplay(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
     if (g.display == EGL_NO_DISPLAY) throw std::runtime_error("gl_compute: no EGL surfaceless display (is libegl-mesa0 installed?)");

@@ -31,10 +31,12 @@
 // masses (kernels/gaussian.glsl: 0.9548 for the taper at cull_u = 3, 0.9878 at 3.5; YHMR16's hard
 // cut at 3 keeps 0.989 and loses the rest), so the culled P-NDF keeps the footprint's mass; its error is only the
 // culled elements' different normals (measured: docs/microstructure.md). The hierarchy never changes which elements
-// count: it only skips those that provably fail these tests, using for element i the s-radius
-//   r_i = |J_i|_F cull_u sigma_h + cull_s sqrt(sigma_r^2 + |J_i|_F^2 sigma_h^2),
-// which bounds the lobe mean's shift (|J R diag(sigma_h^2 / kappa) e| <= |J| cull_u sigma_h inside the
-// ellipse, since kappa >= sigma_h^2) plus cull_s times C's largest sd (C <= sigma_r^2 + |B|^2).
+// count: it only skips those that provably fail these tests, using for element i and each axis a
+// of s the radius
+//   r_ia = |J_ia| cull_u sigma_h + cull_s sqrt(sigma_r^2 + |J_ia|^2 sigma_h^2),   J_ia = row a of J_i,
+// which bounds the lobe mean's shift along a (J_ia . R diag(sigma_h^2 / kappa) e, and that vector's
+// length is at most cull_u sigma_h inside the ellipse, since kappa >= sigma_h^2) plus the extent of
+// the cull_s ellipse of C along a, cull_s sqrt(C_aa), with C_aa <= sigma_r^2 + |J_ia|^2 sigma_h^2.
 //
 // Hierarchy (host side). A normal-space grid over [-1, 1]^2: each cell lists the elements whose
 // s-box (s_i +- r_i) overlaps it, sorted along a Morton curve of their lattice position, with a
@@ -160,7 +162,11 @@ public:
                 jmax = std::max(jmax, static_cast<real>(jf));
                 const double sh = static_cast<double>(p.k_.sigma_h), sr = static_cast<double>(g.sigma_r), cu = static_cast<double>(g.cull_u), cs = static_cast<double>(g.cull_s);
                 // Rounded up by 1e-4 relative plus 1e-6: the float kernel's own rounding stays inside.
-                p.radius_[k] = static_cast<real>((jf * cu * sh + cs * std::sqrt(sr * sr + jf * jf * sh * sh)) * (1 + 1e-4) + 1e-6);
+                // Per axis a, with J_a the Jacobian's row a (see the header comment).
+                const double jx = std::sqrt(q.jacobian[0].x * q.jacobian[0].x + q.jacobian[1].x * q.jacobian[1].x);
+                const double jy = std::sqrt(q.jacobian[0].y * q.jacobian[0].y + q.jacobian[1].y * q.jacobian[1].y);
+                const auto radius = [&](double ja) { return static_cast<real>((ja * cu * sh + cs * std::sqrt(sr * sr + ja * ja * sh * sh)) * (1 + 1e-4) + 1e-6); };
+                p.radius_[k] = vec2(radius(jx), radius(jy));
                 const double z2 = std::max(1e-12, 1 - q.s.x * q.s.x - q.s.y * q.s.y);
                 slope2 += static_cast<real>((q.s.x * q.s.x + q.s.y * q.s.y) / z2);
             }
@@ -294,7 +300,7 @@ public:
     std::size_t overflow_count() const { return static_cast<std::size_t>(cell_begin_.back() - cell_begin_[cell_begin_.size() - 2]); }
     // Elements, s-radii, the cells' element lists and their position trees.
     std::size_t memory_bytes() const {
-        return data_.size() * sizeof(vec4) + radius_.size() * sizeof(real) + cell_begin_.size() * sizeof(std::uint32_t) +
+        return data_.size() * sizeof(vec4) + radius_.size() * sizeof(vec2) + cell_begin_.size() * sizeof(std::uint32_t) +
                refs_.size() * sizeof(std::uint32_t) + node_begin_.size() * sizeof(std::uint32_t) + nodes_.size() * sizeof(box);
     }
 
@@ -362,7 +368,7 @@ private:
     real direct_sum(const frame& f, const vec2& s, const params& k) const {
         real sum = 0;
         for_each_in_box(f, k, [&](std::size_t e, const element& el, const vec2& u) {
-            if (std::fabs(s.x - el.us.z) > radius_[e] || std::fabs(s.y - el.us.w) > radius_[e]) return;
+            if (std::fabs(s.x - el.us.z) > radius_[e].x || std::fabs(s.y - el.us.w) > radius_[e].y) return;
             sum += kernels::glint_pndf_element(el, u, f, s, k);
         });
         return sum;
@@ -375,7 +381,7 @@ private:
             for (std::uint32_t r = cell_begin_[static_cast<std::size_t>(c)]; r < cell_begin_[static_cast<std::size_t>(c) + 1]; ++r) {
                 const std::size_t e = refs_[r];
                 const element el{data_[2 * e], data_[2 * e + 1]};
-                if (std::fabs(s.x - el.us.z) > radius_[e] || std::fabs(s.y - el.us.w) > radius_[e]) continue;
+                if (std::fabs(s.x - el.us.z) > radius_[e].x || std::fabs(s.y - el.us.w) > radius_[e].y) continue;
                 sum += kernels::glint_pndf_element_marginal(el, s, k_);
             }
         return sum / (period_.x * period_.y);
@@ -443,7 +449,7 @@ private:
                         for (std::uint32_t r = first; r < last; ++r) {
                             const std::size_t e = refs_[r];
                             const element el{data_[2 * e], data_[2 * e + 1]};
-                            if (std::fabs(s.x - el.us.z) > radius_[e] || std::fabs(s.y - el.us.w) > radius_[e]) continue;
+                            if (std::fabs(s.x - el.us.z) > radius_[e].x || std::fabs(s.y - el.us.w) > radius_[e].y) continue;
                             sum += kernels::glint_pndf_element(el, vec2(el.us.x, el.us.y) + offset, f, s, k_);
                         }
                     } else {
@@ -470,7 +476,8 @@ private:
     void build_grid() {
         const std::size_t n = radius_.size();
         // Cells about twice the median s-radius, 8 to 256 per side.
-        std::vector<real> r(radius_);
+        std::vector<real> r(n);
+        for (std::size_t e = 0; e < n; ++e) r[e] = std::max(radius_[e].x, radius_[e].y);
         std::nth_element(r.begin(), r.begin() + static_cast<std::ptrdiff_t>(n / 2), r.end());
         const real median = r[n / 2];
         grid_size_ = std::clamp(static_cast<int>(std::floor(real(2) / (real(2) * median))), 8, 256);
@@ -478,9 +485,9 @@ private:
         const int gs = grid_size_;
         const std::size_t cells = static_cast<std::size_t>(gs) * static_cast<std::size_t>(gs) + 1;  // + the overflow list
         const auto range = [&](std::size_t e, int& x0, int& x1, int& y0, int& y1) {
-            const real sx = data_[2 * e].z, sy = data_[2 * e].w, rr = radius_[e];
-            x0 = std::clamp(static_cast<int>(std::floor((sx - rr + 1) / cell_)), 0, gs - 1), x1 = std::clamp(static_cast<int>(std::floor((sx + rr + 1) / cell_)), 0, gs - 1);
-            y0 = std::clamp(static_cast<int>(std::floor((sy - rr + 1) / cell_)), 0, gs - 1), y1 = std::clamp(static_cast<int>(std::floor((sy + rr + 1) / cell_)), 0, gs - 1);
+            const real sx = data_[2 * e].z, sy = data_[2 * e].w, rx = radius_[e].x, ry = radius_[e].y;
+            x0 = std::clamp(static_cast<int>(std::floor((sx - rx + 1) / cell_)), 0, gs - 1), x1 = std::clamp(static_cast<int>(std::floor((sx + rx + 1) / cell_)), 0, gs - 1);
+            y0 = std::clamp(static_cast<int>(std::floor((sy - ry + 1) / cell_)), 0, gs - 1), y1 = std::clamp(static_cast<int>(std::floor((sy + ry + 1) / cell_)), 0, gs - 1);
             return (x1 - x0 + 1) * (y1 - y0 + 1) <= 64;
         };
         std::vector<std::uint32_t> count(cells, 0);
@@ -550,7 +557,7 @@ private:
     real alpha_g_ = real(0.1), jmax_ = 0, cell_ = real(0.25);
     int grid_size_ = 8;
     std::vector<vec4> data_;         // two per element: (u, s), J
-    std::vector<real> radius_;       // r_i
+    std::vector<vec2> radius_;       // r_i per axis of s
     std::vector<std::uint32_t> cell_begin_, refs_, node_begin_;
     std::vector<box> nodes_;
 };

@@ -161,8 +161,8 @@ public:
                                             q.jacobian[1].y * q.jacobian[1].y);
                 jmax = std::max(jmax, static_cast<real>(jf));
                 const double sh = static_cast<double>(p.k_.sigma_h), sr = static_cast<double>(g.sigma_r), cu = static_cast<double>(g.cull_u), cs = static_cast<double>(g.cull_s);
-                // Rounded up by 1e-4 relative plus 1e-6: the float kernel's own rounding stays inside.
-                // Per axis a, with J_a the Jacobian's row a (see the header comment).
+                // Per axis a, with J_a the Jacobian's row a (see the header comment); rounded up by
+                // 1e-4 relative plus 1e-6, so that the float kernel's own rounding stays inside.
                 const double jx = std::sqrt(q.jacobian[0].x * q.jacobian[0].x + q.jacobian[1].x * q.jacobian[1].x);
                 const double jy = std::sqrt(q.jacobian[0].y * q.jacobian[0].y + q.jacobian[1].y * q.jacobian[1].y);
                 const auto radius = [&](double ja) { return static_cast<real>((ja * cu * sh + cs * std::sqrt(sr * sr + ja * ja * sh * sh)) * (1 + 1e-4) + 1e-6); };
@@ -171,8 +171,8 @@ public:
                 slope2 += static_cast<real>((q.s.x * q.s.x + q.s.y * q.s.y) / z2);
             }
         p.jmax_ = jmax;
-        // Smith roughness for G (notes: alpha = sqrt(2 Var p) per axis, Beckmann): the mean squared
-        // slope over both axes, halved per axis, plus sigma_r^2.
+        // Smith roughness for G (notes: Beckmann alpha^2 = 2 Var(p) per axis): the mean squared
+        // slope |p|^2 over both axes (isotropic: 2 Var per axis), plus the lobes' own 2 sigma_r^2.
         p.alpha_g_ = std::sqrt(std::max(real(1e-8), slope2 / static_cast<real>(n) + real(2) * g.sigma_r * g.sigma_r));
         p.build_grid();
         return p;

@@ -12,19 +12,14 @@
 #include <glint/gaussian.hpp>
 #include <glint/patterns.hpp>
 
-#include "../tests/support/pndf_histogram.hpp"
+#include "../tests/support/pndf_support.hpp"
 #include "report.hpp"
 
 namespace glint_report {
 
 namespace {
 
-glint::texel_footprint<float> footprint(glm::vec2 c, float a, float b, float t) {
-    const glm::mat2 R(std::cos(t), std::sin(t), -std::sin(t), std::cos(t));
-    glint::texel_footprint<float> f;
-    f.center = c, f.covariance = R * glm::mat2(a * a, 0, 0, b * b) * glm::transpose(R);
-    return f;
-}
+glint::texel_footprint<float> footprint(glm::vec2 c, float a, float b, float t) { return glint_test::rotated_footprint(c, a, b, t); }
 
 float unit(std::uint32_t i, std::uint32_t s) { return glint::unit_from_bits<float>(glint::pcg3d(glm::uvec3(i, s, 0x3e7u)).x); }
 

@@ -183,7 +183,7 @@ public:
     real eval_hierarchy(const texel_footprint<real>& fp, const vec2& s) const {
         if (!(s.x * s.x + s.y * s.y < real(1))) return real(0);
         const frame f = prepare(fp);
-        return query(cell_of(s), f, s) + query(grid_size_ * grid_size_, f, s);
+        return hierarchy_sum(f, s);
     }
 
     // D_P(s): the hierarchy, or the direct sum where that is cheaper, or the continuum limit for
@@ -193,7 +193,7 @@ public:
         const frame f = prepare(fp);
         if (large_footprint(f)) return continuum_limit(s);
         if (!hierarchy_pays(f, cell_of(s))) return direct_sum(f, s, sampling_params());
-        return query(cell_of(s), f, s) + query(grid_size_ * grid_size_, f, s);
+        return hierarchy_sum(f, s);
     }
 
     // D_P(s) as the GLSL kernel computes it: the lattice points in the culling box, at most
@@ -212,11 +212,8 @@ public:
     // The footprint's element weight sum_i w_i (the integral of D_P over s, before lobe culling
     // and the disk's edge), over the same elements as eval_reference.
     real mass(const texel_footprint<real>& fp) const {
-        params k = reference_params();
-        const frame f = prepare(fp, k.cull_u, k.cull_s);
-        real sum = 0;
-        for_each_in_box(f, k, [&](std::size_t, const element&, const vec2& u) { sum += kernels::glint_pndf_element_weight(u, f, k); });
-        return sum;
+        const params k = reference_params();
+        return weight_sum(prepare(fp, k.cull_u, k.cull_s), k);
     }
 
     // A half vector from the P-NDF: an element i with probability w_i / W among those inside the
@@ -267,16 +264,12 @@ public:
     real pdf(const texel_footprint<real>& fp, const vec2& s, real weight) const {
         if (!(s.x * s.x + s.y * s.y < real(1)) || !(weight > 0)) return real(0);
         const frame f = prepare(fp);
-        if (!large_footprint(f) && hierarchy_pays(f, cell_of(s))) return (query(cell_of(s), f, s) + query(grid_size_ * grid_size_, f, s)) / weight;
+        if (!large_footprint(f) && hierarchy_pays(f, cell_of(s))) return (hierarchy_sum(f, s)) / weight;
         return direct_sum(f, s, sampling_params()) / weight;
     }
     // W: the sum of the tapered weights of the elements sample() draws from.
     real sampling_weight(const texel_footprint<real>& fp) const {
-        const frame f = prepare(fp);
-        params k = sampling_params();
-        real total = 0;
-        for_each_in_box(f, k, [&](std::size_t, const element&, const vec2& u) { total += kernels::glint_pndf_element_weight(u, f, k); });
-        return total;
+        return weight_sum(prepare(fp), sampling_params());
     }
 
     // XTXW24 Eq. 1 with eval's D_P, Smith G2 (Beckmann at alpha_g()) and the conductor Fresnel.
@@ -400,6 +393,16 @@ private:
         // The listed elements inside the box (1.5 for the tree's visits per element found, and 256
         // for its descent), against every lattice point of the box.
         return 1.5 * listed * area / map_area + 256.0 < area / spacing2;
+    }
+
+    // The hierarchy's D_P(s): the cell of s and the overflow list.
+    real hierarchy_sum(const frame& f, const vec2& s) const { return query(cell_of(s), f, s) + query(grid_size_ * grid_size_, f, s); }
+
+    // The sum of the tapered weights of the elements in the culling box of f under params k.
+    real weight_sum(const frame& f, const params& k) const {
+        real sum = 0;
+        for_each_in_box(f, k, [&](std::size_t, const element&, const vec2& u) { sum += kernels::glint_pndf_element_weight(u, f, k); });
+        return sum;
     }
 
     // The normal-space cell holding s (|s| < 1).

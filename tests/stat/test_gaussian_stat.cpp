@@ -17,7 +17,7 @@
 #include <glint/testing/directional.hpp>
 #include <glint/testing/stats.hpp>
 
-#include "../support/pndf_histogram.hpp"
+#include "../support/pndf_support.hpp"
 
 namespace gt = glint::testing;
 
@@ -29,12 +29,7 @@ double uniform(std::uint32_t i, std::uint32_t stream) {
     return glint::open_unit_from_bits<double>(glint::pcg3d(glm::uvec3(i, stream, 0x9a55u)).x);
 }
 
-glint::texel_footprint<double> footprint(glm::dvec2 c, double a, double b, double t) {
-    const glm::dmat2 R(std::cos(t), std::sin(t), -std::sin(t), std::cos(t));
-    glint::texel_footprint<double> f;
-    f.center = c, f.covariance = R * glm::dmat2(a * a, 0, 0, b * b) * glm::transpose(R);
-    return f;
-}
+glint::texel_footprint<double> footprint(glm::dvec2 c, double a, double b, double t) { return glint_test::rotated_footprint(c, a, b, t); }
 
 struct drawn {
     std::vector<glm::dvec3> disk, hemisphere, mirrored;
@@ -61,7 +56,7 @@ drawn draw(const glint::gaussian_pndf<double>& pndf, const glint::texel_footprin
 TEST_CASE("P-NDF: a large footprint with small sigma_r converges to the histogram of the interpolated normals") {
     // sigma_r = 1e-4, footprint sd 12 x 8 texels on a 64-texel noise map; 32 x 32 bins over
     // s in [-0.32, 0.32]^2. The histogram: 2e6 points u ~ G_P, s = the bicubic normal's xy part
-    // (its L1 noise is about 0.01); the P-NDF's bin masses: tests/support/pndf_histogram.hpp. The
+    // (its L1 noise is about 0.01); the P-NDF's bin masses: tests/support/pndf_support.hpp. The
     // element model blurs each texel's normals by sigma_h instead of the texel's extent, so the
     // agreement improves with the elements per texel: L1 below 0.05 at 4 per texel side.
     glint::pattern_params pp;
@@ -92,11 +87,7 @@ TEST_CASE("P-NDF sampler: chi-square against its pdf on the disk and on the hemi
                             {glint::pattern::leather, 0.02, 0.3, 0.3}};
     int tests = 0;
     for (const auto& st : setups) {
-        glint::pattern_params pp;
-        pp.kind = st.kind, pp.width = pp.height = 32, pp.slope_rms = 0.15;
-        glint::gaussian_params<double> g;
-        g.sigma_r = st.sigma_r;
-        const auto pndf = glint::gaussian_pndf<double>::build(glint::make_normal_map(pp), g);
+        const auto pndf = glint_test::pattern_pndf(st.kind, 32, 0.15, st.sigma_r);
         const auto fp = footprint({11.3, 5.8}, st.a, st.b, 0.6);
         const drawn d = draw(pndf, fp, 100000, 10u * static_cast<std::uint32_t>(st.kind));
         const double W = pndf.sampling_weight(fp);
@@ -115,11 +106,7 @@ TEST_CASE("P-NDF sampler: chi-square against its pdf on the disk and on the hemi
 
 TEST_CASE("P-NDF sampler: the estimator's mean is the P-NDF-weighted integral") {
     // E[g(s)] for g(s) = s.x + 2 s.y^2 against the quadrature of g D_P / W over the disk.
-    glint::pattern_params pp;
-    pp.kind = glint::pattern::noise, pp.width = pp.height = 32, pp.slope_rms = 0.15;
-    glint::gaussian_params<double> g;
-    g.sigma_r = 0.02;
-    const auto pndf = glint::gaussian_pndf<double>::build(glint::make_normal_map(pp), g);
+    const auto pndf = glint_test::pattern_pndf(glint::pattern::noise, 32, 0.15, 0.02);
     const auto fp = footprint({7.1, 19.4}, 2.5, 1.0, 1.2);
     const auto fn = [](glm::dvec2 s) { return s.x + 2 * s.y * s.y; };
     gt::running_moments m;
@@ -138,11 +125,7 @@ TEST_CASE("P-NDF sampler: the estimator's mean is the P-NDF-weighted integral") 
 }
 
 TEST_CASE("directional chi-square: power against a pdf without its Jacobian and a mirrored axis") {
-    glint::pattern_params pp;
-    pp.kind = glint::pattern::noise, pp.width = pp.height = 32, pp.slope_rms = 0.25;
-    glint::gaussian_params<double> g;
-    g.sigma_r = 0.03;
-    const auto pndf = glint::gaussian_pndf<double>::build(glint::make_normal_map(pp), g);
+    const auto pndf = glint_test::pattern_pndf(glint::pattern::noise, 32, 0.25, 0.03);
     const auto fp = footprint({11.3, 5.8}, 3, 1.5, 0.6);
     const drawn d = draw(pndf, fp, 100000, 501);
     const double W = pndf.sampling_weight(fp);

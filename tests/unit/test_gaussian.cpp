@@ -13,6 +13,8 @@
 #include <glint/gaussian.hpp>
 #include <glint/patterns.hpp>
 
+#include "../support/pndf_support.hpp"
+
 namespace {
 
 template <class real>
@@ -77,11 +79,7 @@ double closed_form(const element_case& c, glm::dvec2 s) {
     return static_cast<double>(k::glint_pndf_element(el, v2(c.u_i), f, v2(s), p));
 }
 
-// A covariance with sds (a, b) along angle t.
-glm::dmat2 covariance(double a, double b, double t) {
-    const glm::dmat2 R(std::cos(t), std::sin(t), -std::sin(t), std::cos(t));
-    return R * glm::dmat2(a * a, 0, 0, b * b) * glm::transpose(R);
-}
+glm::dmat2 covariance(double a, double b, double t) { return glint_test::rotated_covariance(a, b, t); }
 
 double rnd(int i, int stream) { return glint::unit_from_bits<double>(glint::pcg3d(glm::uvec3(static_cast<unsigned>(i), static_cast<unsigned>(stream), 77u)).x); }
 
@@ -116,8 +114,6 @@ TEST_CASE("gaussian element: Eq. 6 closed form against 2D quadrature (double 1e-
         // s near the lobe: its mean, and points 1 sd and 2 sd off along each axis.
         const double lobe_sd = std::sqrt(c.sigma_r * c.sigma_r + glm::dot(g, g) * c.sigma_h * c.sigma_h);
         for (int j = 0; j < 3; ++j) {
-            const double mean_f = closed_form<double>(c, c.s_i);
-            (void)mean_f;
             const glm::dvec2 s = c.s_i + glm::dvec2(j * lobe_sd * rnd(i, 20 + j), -j * lobe_sd * rnd(i, 30 + j));
             const double ref = eq6_quadrature(c, s);
             if (!(ref > 1e-30)) continue;
@@ -321,11 +317,7 @@ TEST_CASE("P-NDF: hierarchy equals the direct sum; against brute force within th
 }
 
 TEST_CASE("P-NDF: the continuum limit for footprints of many periods agrees with the periodic sum") {
-    glint::pattern_params pp;
-    pp.kind = glint::pattern::noise, pp.width = pp.height = 16, pp.slope_rms = 0.1;
-    glint::gaussian_params<double> g;
-    g.sigma_r = 0.02;
-    const auto pndf = glint::gaussian_pndf<double>::build(glint::make_normal_map(pp), g);
+    const auto pndf = glint_test::pattern_pndf(glint::pattern::noise, 16, 0.1, 0.02);
     typename glint::gaussian_pndf<double>::frame f{};
     // Just past the threshold, the limit against the exact periodic sum (the reference).
     double sigma = 14;

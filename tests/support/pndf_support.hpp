@@ -1,5 +1,6 @@
-// The histogram of a normal map's interpolated normals under a Gaussian footprint, and a
-// P-NDF's masses in the same bins, for tests/stat and the report: D_P is a sum of Gaussian lobes
+// Shared by the P-NDF tests and the report: rotated Gaussian footprints, a P-NDF over a
+// procedural map, and the histogram of a normal map's interpolated normals under a footprint with
+// a P-NDF's masses in the same bins. D_P is a sum of Gaussian lobes
 // (kernels/gaussian.glsl), each integrated over the bins by 16 x 16 stratified points through its
 // Cholesky factor (lobes as thin as sigma_r = 1e-4 lie far inside a bin, so this is exact enough
 // where point sampling of D_P would alias), over every element image in the 7-sigma box.
@@ -11,8 +12,34 @@
 
 #include <glint/core.hpp>
 #include <glint/gaussian.hpp>
+#include <glint/patterns.hpp>
 
 namespace glint_test {
+
+// The covariance with sds (a, b) along the axes rotated by angle t.
+template <class real>
+glm::mat<2, 2, real, glm::defaultp> rotated_covariance(real a, real b, real t) {
+    using m2 = glm::mat<2, 2, real, glm::defaultp>;
+    const m2 R(std::cos(t), std::sin(t), -std::sin(t), std::cos(t));
+    return R * m2(a * a, 0, 0, b * b) * glm::transpose(R);
+}
+
+template <class real>
+glint::texel_footprint<real> rotated_footprint(glm::vec<2, real, glm::defaultp> c, real a, real b, real t) {
+    glint::texel_footprint<real> f;
+    f.center = c, f.covariance = rotated_covariance(a, b, t);
+    return f;
+}
+
+// The P-NDF (default culling, one element per texel) of a square periodic pattern.
+template <class real>
+glint::gaussian_pndf<real> pattern_pndf(glint::pattern kind, int size, double slope_rms, real sigma_r) {
+    glint::pattern_params p;
+    p.kind = kind, p.width = p.height = size, p.slope_rms = slope_rms;
+    glint::gaussian_params<real> g;
+    g.sigma_r = sigma_r;
+    return glint::gaussian_pndf<real>::build(glint::make_normal_map(p), g);
+}
 
 struct normal_bins {
     int bins = 32;

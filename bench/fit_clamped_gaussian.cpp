@@ -1,7 +1,8 @@
-// Reproduces the polynomial fits in glint_clamped_gaussian_t (kernels/binomial.glsl): the
+// Reproduces the polynomial fits in glint_clamped_gaussian_fit (kernels/binomial.glsl): the
 // inverse t(y) of y(t) = log(chi(t) / psi(t)^2 - 1), where psi(t) = E[max(t + Z, 0)] and
-// chi(t) = E[max(t + Z, 0)^2] for a standard normal Z. Least squares on 2000 Chebyshev nodes in
-// double, with t(y) found by bisection; prints the coefficients and the maximum error in t.
+// chi(t) = E[max(t + Z, 0)^2] for a standard normal Z, and L(y) = -log psi(T(y)) of the fitted T.
+// Least squares on 2000 Chebyshev nodes in double, with t(y) found by bisection; prints the
+// coefficients and the maximum errors (in t, and in L, which is the relative error of the mean).
 //   glint_fit_clamped_gaussian
 #include <cmath>
 #include <cstdio>
@@ -62,29 +63,40 @@ double horner(const std::vector<double>& c, double s) {
 }
 
 void report(const char* name, const std::vector<double>& c, double center, double half, double max_error) {
-    std::printf("%s: s = (x - %.17g) / %.17g, max |t error| %.2e\n  coefficients (s^0 first):", name, center, half, max_error);
+    std::printf("%s: s = (x - %.17g) / %.17g, max |error| %.2e\n  coefficients (s^0 first):", name, center, half, max_error);
     for (double v : c) std::printf(" %.17g", v);
     std::printf("\n");
 }
 
 }  // namespace
 
+// One piece of the fits: T(y) ~ t(y) and L(y) ~ -log psi(T(y)), polynomials in x = y or
+// x = sqrt(y), fitted on [a, b] in x.
+struct piece {
+    double a, b;
+    bool root;
+    int t_degree, l_degree;
+};
+
 int main() {
-    // Piece 1: y in [-2.2, 7.3], polynomial in y.
-    const double a1 = -2.2, b1 = 7.3;
-    auto c1 = fit(t_of_y, a1, b1, 8);
-    double e1 = 0;
-    for (double y = a1; y <= b1; y += 1e-3) e1 = std::max(e1, std::fabs(horner(c1, (y - (a1 + b1) / 2) / ((b1 - a1) / 2)) - t_of_y(y)));
-    report("y in [-2.2, 7.3], x = y", c1, (a1 + b1) / 2, (b1 - a1) / 2, e1);
-    // Piece 2: y in [7.3, 35.7], polynomial in sqrt(y).
-    const double a2 = std::sqrt(7.3), b2 = std::sqrt(35.7);
-    auto c2 = fit([](double q) { return t_of_y(q * q); }, a2, b2, 6);
-    double e2 = 0;
-    for (double y = 7.3; y <= 35.7; y += 1e-3) e2 = std::max(e2, std::fabs(horner(c2, (std::sqrt(y) - (a2 + b2) / 2) / ((b2 - a2) / 2)) - t_of_y(y)));
-    report("y in [7.3, 35.7], x = sqrt(y)", c2, (a2 + b2) / 2, (b2 - a2) / 2, e2);
-    // Below -2.2: t = exp(-y / 2).
-    double e3 = 0;
-    for (double t = 3.0; t <= 8.0; t += 1e-3) e3 = std::max(e3, std::fabs(std::exp(-y_of_t(t) / 2) - t) / t);
-    std::printf("y < -2.2 (t > 3): t = exp(-y / 2), max relative t error %.2e\n", e3);
+    const piece pieces[] = {{-3.6, 0, false, 10, 14}, {0, 7.3, false, 10, 14}, {std::sqrt(7.3), std::sqrt(35.7), true, 6, 8}};
+    for (const piece& q : pieces) {
+        auto y_of = [&](double x) { return q.root ? x * x : x; };
+        const double center = (q.a + q.b) / 2, half = (q.b - q.a) / 2;
+        const auto ct = fit([&](double x) { return t_of_y(y_of(x)); }, q.a, q.b, q.t_degree);
+        auto T = [&](double x) { return horner(ct, (x - center) / half); };
+        // L of the fitted T, so that sigma = m exp(L(y)) gives max(sigma (T + Z), 0) the mean m up
+        // to L's fit error alone.
+        const auto cl = fit([&](double x) { return -std::log(psi(T(x))); }, q.a, q.b, q.l_degree);
+        double et = 0, el = 0;
+        for (double x = q.a; x <= q.b; x += (q.b - q.a) * 1e-5) {
+            et = std::max(et, std::fabs(T(x) - t_of_y(y_of(x))));
+            el = std::max(el, std::fabs(horner(cl, (x - center) / half) + std::log(psi(T(x)))));
+        }
+        const char* x = q.root ? "sqrt(y)" : "y";
+        std::printf("y in [%.4g, %.4g], x = %s, s = (x - %.17g) / %.17g\n", y_of(q.a), y_of(q.b), x, center, half);
+        report("  T", ct, center, half, et);
+        report("  L", cl, center, half, el);
+    }
     return 0;
 }

@@ -155,41 +155,105 @@ GLINT_FN glint_binomial glint_binomial_dual_gated(real N, real p, real u1, real 
 // ---------------------------------------------------------------------------------------------
 // The mean-preserving variant (derivation in glint/binomial.hpp).
 
-// psi(t) = E[max(t + Z, 0)] = t Phi(t) + phi(t) for a standard normal Z.
-GLINT_FN real glint_normal_positive_part_mean(real t) {
-    return max(t * glint_normal_cdf(t) + glint_normal_pdf(t), real(0));
-}
-
-// t such that Var[max(t + Z, 0)] / E[max(t + Z, 0)]^2 = exp(y): the inverse of
-// y(t) = log(chi(t) / psi(t)^2 - 1), chi(t) = E[max(t + Z, 0)^2]. Least-squares polynomial fits
-// made in double by bench/fit_clamped_gaussian.cpp, whose output gives the digits: for y in
-// [-2.2, 7.3] a degree-8 polynomial in (y - 2.55) / 4.75, max |t error| 4.4e-4; for y in
-// (7.3, 35.7] a degree-6 polynomial in (sqrt(y) - 4.3384) / 1.6365, max |t error| 1.5e-6; below
-// -2.2, t = exp(-y / 2), the unclamped limit (relative t error below 1.4e-3); y is clamped to
-// [-40, 35.7] (t from 4.9e8 down to -8).
-GLINT_FN real glint_clamped_gaussian_t(real y) {
-    y = clamp(y, real(-40), real(35.7));
-    if (y < real(-2.2)) return exp(real(-0.5) * y);
-    if (y <= real(7.3)) {
-        real s = (y - real(2.55)) / real(4.75);
-        real a = real(0.1304822196869064);
-        a = real(-0.27358394382870294) + s * a;
-        a = real(0.013247836019274119) + s * a;
-        a = real(0.31032817702901683) + s * a;
-        a = real(-0.094752503176729896) + s * a;
-        a = real(-0.46819370122792325) + s * a;
-        a = real(1.087826679394494) + s * a;
-        a = real(-2.578053376791563) + s * a;
-        return real(-1.1458385261407047) + s * a;
+// The one-sided fit as a function of y = log(v / m^2): T(y), the t at which
+// Var[max(t + Z, 0)] / E[max(t + Z, 0)]^2 = exp(y) (the inverse of log(chi(t) / psi(t)^2 - 1)),
+// and L(y) = -log psi(T(y)), so that sigma = m exp(L) gives max(sigma (T + Z), 0) the mean m.
+// L is fitted to the fitted T, so T's error moves only the variance. Least-squares polynomials
+// made in double by bench/fit_clamped_gaussian.cpp, whose output gives the digits: on
+// [-3.6, 0] and (0, 7.3] in y (degrees 10 and 14), on (7.3, 35.7] in sqrt(y) (degrees 6 and 8);
+// max |T error| 4.7e-6, max |L error| 1.9e-7 (the mean's relative error). y is clamped to
+// [-3.6, 35.7] (t from 6.05 down to -8); below -3.58 (m >= 6 sd) callers use t = m / sd.
+// No transcendental but the sqrt of the last piece; each polynomial is split into its even and
+// odd parts (Horner in s^2), which halves the chain of dependent multiply-adds.
+GLINT_FN vec2 glint_clamped_gaussian_fit(real y) {
+    y = clamp(y, real(-3.6), real(35.7));
+    if (y <= real(0)) {
+        real s = (y - real(-1.8)) / real(1.8);
+        real s2 = s * s;
+        real t_even = real(-0.010308468088042321);
+        t_even = real(0.037050860364841814) + s2 * t_even;
+        t_even = real(-0.054444013333632198) + s2 * t_even;
+        t_even = real(0.13071049084714717) + s2 * t_even;
+        t_even = real(0.78463584858073332) + s2 * t_even;
+        t_even = real(2.4409131101728678) + s2 * t_even;
+        real t_odd = real(0.0053725919361740614);
+        t_odd = real(-0.028263419599224709) + s2 * t_odd;
+        t_odd = real(0.060598304497303329) + s2 * t_odd;
+        t_odd = real(-0.44010862391410144) + s2 * t_odd;
+        t_odd = real(-2.3186858997638047) + s2 * t_odd;
+        real t = t_even + s * t_odd;
+        real l_even = real(-4.1355943758630882e-05);
+        l_even = real(0.0013708845131560855) + s2 * l_even;
+        l_even = real(-0.0017652475879844339) + s2 * l_even;
+        l_even = real(-0.0008359210463114719) + s2 * l_even;
+        l_even = real(-0.0043677635492591063) + s2 * l_even;
+        l_even = real(0.024399494908224236) + s2 * l_even;
+        l_even = real(0.10262096278746217) + s2 * l_even;
+        l_even = real(-0.8933562617597528) + s2 * l_even;
+        real l_odd = real(0.00049966200891597213);
+        l_odd = real(0.00097047932315809165) + s2 * l_odd;
+        l_odd = real(-0.0082451092534076096) + s2 * l_odd;
+        l_odd = real(0.018805775066734826) + s2 * l_odd;
+        l_odd = real(-0.035202442401896274) + s2 * l_odd;
+        l_odd = real(0.10915632968954159) + s2 * l_odd;
+        l_odd = real(0.94203968079589862) + s2 * l_odd;
+        real l = l_even + s * l_odd;
+        return vec2(t, l);
+    } else if (y <= real(7.3)) {
+        real s = (y - real(3.6499999999999999)) / real(3.6499999999999999);
+        real s2 = s * s;
+        real t_even = real(0.0042119353416058061);
+        t_even = real(-0.0031351309518826537) + s2 * t_even;
+        t_even = real(-0.020667094310529547) + s2 * t_even;
+        t_even = real(0.048476948830804792) + s2 * t_even;
+        t_even = real(0.45604755494646948) + s2 * t_even;
+        t_even = real(-1.6904640841157963) + s2 * t_even;
+        real t_odd = real(-0.007883666413722944);
+        t_odd = real(0.018743260584426852) + s2 * t_odd;
+        t_odd = real(0.0042882889673933203) + s2 * t_odd;
+        t_odd = real(-0.17479258110259771) + s2 * t_odd;
+        t_odd = real(-1.6533601232843811) + s2 * t_odd;
+        real t = t_even + s * t_odd;
+        real l_even = real(-0.00092637762144238739);
+        l_even = real(0.0038659831671257359) + s2 * l_even;
+        l_even = real(-0.0018628638056436336) + s2 * l_even;
+        l_even = real(-0.028337951478073782) + s2 * l_even;
+        l_even = real(0.040610156090553046) + s2 * l_even;
+        l_even = real(0.12542798783199929) + s2 * l_even;
+        l_even = real(-0.021419997731581999) + s2 * l_even;
+        l_even = real(3.9783197408946505) + s2 * l_even;
+        real l_odd = real(0.00099441504559921842);
+        l_odd = real(-0.01163028713569085) + s2 * l_odd;
+        l_odd = real(0.033190904823281492) + s2 * l_odd;
+        l_odd = real(-0.0080217661863960753) + s2 * l_odd;
+        l_odd = real(-0.083755938625149087) + s2 * l_odd;
+        l_odd = real(-0.10767544864638232) + s2 * l_odd;
+        l_odd = real(4.0165295380171653) + s2 * l_odd;
+        real l = l_even + s * l_odd;
+        return vec2(t, l);
+    } else {
+        real s = (sqrt(y) - real(4.3383994578685607)) / real(1.6365482406473015);
+        real s2 = s * s;
+        real t_even = real(0.00060684978664457621);
+        t_even = real(0.0056332391221094883) + s2 * t_even;
+        t_even = real(0.049776818499077981) + s2 * t_even;
+        t_even = real(-5.5657308993254242) + s2 * t_even;
+        real t_odd = real(-0.0021686196695519548);
+        t_odd = real(-0.016333686667123551) + s2 * t_odd;
+        t_odd = real(-2.472677074787021) + s2 * t_odd;
+        real t = t_even + s * t_odd;
+        real l_even = real(-0.00011855096240135236);
+        l_even = real(0.00064035094124853867) + s2 * l_even;
+        l_even = real(-0.0050018841421649403) + s2 * l_even;
+        l_even = real(2.6084050238947181) + s2 * l_even;
+        l_even = real(19.928591754565634) + s2 * l_even;
+        real l_odd = real(-0.0010655800102400772);
+        l_odd = real(0.0024616450769860457) + s2 * l_odd;
+        l_odd = real(0.016124403598439085) + s2 * l_odd;
+        l_odd = real(14.579688207436343) + s2 * l_odd;
+        real l = l_even + s * l_odd;
+        return vec2(t, l);
     }
-    real q = (sqrt(y) - real(4.3383994578685607)) / real(1.6365482406473015);
-    real b = real(0.00060684978664457621);
-    b = real(-0.0021686196695519548) + q * b;
-    b = real(0.0056332391221094883) + q * b;
-    b = real(-0.016333686667123551) + q * b;
-    b = real(0.049776818499077981) + q * b;
-    b = real(-2.472677074787021) + q * b;
-    return real(-5.5657308993254242) + q * b;
 }
 
 // Moments of the capped offset O = min(sigma max(t + Z, 0), span) = clamp(mu + sigma Z, 0, span),
@@ -259,6 +323,16 @@ struct glint_binomial_ends {
     real lower;         // 1 for p <= 1/2
 };
 
+// Where N min(p, 1 - p) reaches this, both end probabilities fall below the smallest normal number
+// as glint_binomial_unbiased_ends_evaluated computes them (methods kk25 and log1p): the near end
+// is at most exp(-N p_near), the far end at most 2^-N, and exp(-88) = 6.1e-39 < 2^-126 = 1.2e-38,
+// exp(-709) = 1.2e-308 < 2^-1022 = 2.2e-308. Taken as 0 they change nothing that rounding keeps
+// (every term they enter is at most N p_near exp(-N p_near) against terms of order N p_near, and
+// a gate compares them with u1, for which 0 and a subnormal decide alike when u1 is normal; the
+// shortcut test compares results bit for bit), and they spare the subnormal arithmetic, which
+// costs about 150 ns here.
+GLINT_CONST(real) GLINT_BINOMIAL_UNDERFLOW_MEAN = GLINT_DOUBLE ? real(709) : real(88);
+
 GLINT_FN glint_binomial_ends glint_binomial_unbiased_ends_evaluated(real N, real p, int method) {
     glint_binomial_ends e;
     e.lower = (p <= real(0.5)) ? real(1) : real(0);
@@ -269,11 +343,15 @@ GLINT_FN glint_binomial_ends glint_binomial_unbiased_ends_evaluated(real N, real
         e.all_negative = (real(1) - p) * (real(1) - p);
         e.any_near = p_near * (real(2) - p_near);
     } else if (method == GLINT_POW_LOG1P) {
-        // One log1p per end: x = log P(near count = 0), x_far = log P(near count = N).
+        // One log1p per end: x = log P(near count = 0), x_far = log P(near count = N). An end
+        // below the normal range is taken as 0 (see GLINT_BINOMIAL_UNDERFLOW_MEAN), without its exp
+        // (exp's underflow path costs about 20 ns) and, for the far end, without its log1p:
+        // x_far <= -N log 2 since p_near <= 1/2.
         real x = N * glint_log1p(-p_near);
-        real x_far = N * glint_log1p(-(real(1) - p_near));
-        real none_near = exp(x);
-        real all_near = exp(x_far);
+        bool far_underflows = N * real(0.693147180559945309417) >= GLINT_BINOMIAL_UNDERFLOW_MEAN;  // log 2, 21 digits
+        real x_far = far_underflows ? real(0) : N * glint_log1p(-(real(1) - p_near));
+        real none_near = (x >= -GLINT_BINOMIAL_UNDERFLOW_MEAN) ? exp(x) : real(0);
+        real all_near = (far_underflows || x_far < -GLINT_BINOMIAL_UNDERFLOW_MEAN) ? real(0) : exp(x_far);
         e.any_near = (x > real(-0.346573590279972654709)) ? -glint_expm1_nonpositive(x) : real(1) - none_near;
         e.all_positive = (e.lower > real(0.5)) ? all_near : none_near;
         e.all_negative = (e.lower > real(0.5)) ? none_near : all_near;
@@ -285,15 +363,6 @@ GLINT_FN glint_binomial_ends glint_binomial_unbiased_ends_evaluated(real N, real
     return e;
 }
 
-// Where N min(p, 1 - p) reaches this, both end probabilities fall below the smallest normal number
-// as glint_binomial_unbiased_ends_evaluated computes them (methods kk25 and log1p): the near end
-// is at most exp(-N p_near), the far end at most 2^-N, and exp(-88) = 6.1e-39 < 2^-126 = 1.2e-38,
-// exp(-709) = 1.2e-308 < 2^-1022 = 2.2e-308. Taken as 0 they change nothing that rounding keeps
-// (every term they enter is at most N p_near exp(-N p_near) against terms of order N p_near, and
-// a gate compares them with u1, for which 0 and a subnormal decide alike when u1 is normal; the
-// shortcut test compares results bit for bit), and they spare the subnormal arithmetic, which
-// costs about 150 ns here.
-GLINT_CONST(real) GLINT_BINOMIAL_UNDERFLOW_MEAN = GLINT_DOUBLE ? real(709) : real(88);
 
 // The ends, without a transcendental where both are below the normal range.
 GLINT_FN glint_binomial_ends glint_binomial_unbiased_ends(real N, real p, int method) {
@@ -345,7 +414,7 @@ GLINT_FN glint_binomial_middle glint_binomial_unbiased_middle_setup(real N, real
     // Choose (t, sigma) so that max(sigma (t + Z), 0) has mean offset_mean and variance var_y.
     // Where the mean is 6 or more standard deviations from the bound the clamp removes less than
     // Phi(-6) = 1e-9 of the mass: then t = mean / sd and sigma = sd, as the fit would give to within
-    // 1e-9 relative, without its log, exp and erfc.
+    // 1e-9 relative, without its log and exp.
     real tiny = GLINT_FLT_MIN_NORMAL;
     real sd = sqrt(var_y);
     if (q.span <= real(1)) {  // N <= 3: the two-point law alone
@@ -355,8 +424,9 @@ GLINT_FN glint_binomial_middle glint_binomial_unbiased_middle_setup(real N, real
         q.sigma = sd;
         q.t = offset_mean / max(sd, tiny);
     } else {
-        q.t = glint_clamped_gaussian_t(log(max(var_y, tiny)) - real(2) * log(max(offset_mean, tiny)));
-        q.sigma = offset_mean / max(glint_normal_positive_part_mean(q.t), tiny);
+        vec2 f = glint_clamped_gaussian_fit(log(max(var_y, tiny) / max(offset_mean * offset_mean, tiny)));
+        q.t = f.x;
+        q.sigma = offset_mean * exp(f.y);
     }
     // The far bound caps the offset at span. Where it removes more than psi(-5) = 5e-8 of the
     // offset's mean (small N), refine (t, sigma) by Newton's method so that

@@ -35,6 +35,15 @@ using namespace glm;  // NOLINT: confined to glint::detail::glsl
 #define GLINT_ELEMENT_DATA_ARG glint_element_data,
 // A named constant (in GLSL: `const T`).
 #define GLINT_CONST(T) static constexpr T
+// A constant table of n floats (n a multiple of 4), written GLINT_FLOAT_TABLE(name, n)
+// GLINT_TABLE_OPEN GLINT_FLOAT4(v0, v1, v2, v3), ... GLINT_TABLE_CLOSE; and read as
+// GLINT_TABLE_READ(name, k). GLSL holds it as `const vec4 name[n / 4]`: Mesa compiles a constant
+// array in time that grows with the square of its element count (docs/conventions.md).
+#define GLINT_FLOAT_TABLE(name, n) static constexpr float name[n] =
+#define GLINT_TABLE_OPEN {
+#define GLINT_TABLE_CLOSE }
+#define GLINT_FLOAT4(a, b, c, d) a, b, c, d
+#define GLINT_TABLE_READ(name, k) name[k]
 // The vector aliases that depend on the precision `real` (in GLSL: the builtin float vectors),
 // and GLINT_DOUBLE, true in the double instantiation (in GLSL: false), for series that need more
 // terms in double; a branch on it is resolved at compile time.

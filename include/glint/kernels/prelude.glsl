@@ -9,6 +9,11 @@
 #define GLINT_OUT(T) out T
 #define GLINT_INOUT(T) inout T
 #define GLINT_CONST(T) const T
+#define GLINT_FLOAT_TABLE(name, n) const vec4 name[(n) / 4] = vec4[(n) / 4]
+#define GLINT_TABLE_OPEN (
+#define GLINT_TABLE_CLOSE )
+#define GLINT_FLOAT4(a, b, c, d) vec4(a, b, c, d)
+#define GLINT_TABLE_READ(name, k) name[(k) >> 2][(k) & 3]
 #define GLINT_PRECISE precise
 #define GLINT_ELEMENT_DATA_PARAM
 #define GLINT_ELEMENT_DATA_ARG

@@ -213,14 +213,13 @@ binomial_model model_of(binomial_variant variant, double N_in, double p_in, pow_
             }
             const bool lower = q.lower > real(0.5);
             const double span = static_cast<double>(q.span), t = static_cast<double>(q.t), sigma = static_cast<double>(q.sigma);
-            const double ks = static_cast<double>(q.far_scale), pi = static_cast<double>(q.two_point);
+            const double pi = static_cast<double>(q.two_point);
             const double w = std::min(std::max(span - 1, 0.0), 1.0);
-            const double a0 = ks >= 0 ? span * (1 - ks) : 0.0, b0 = std::fabs(ks);
             auto place = [&](double offset) { return lower ? 1 + offset : N - 1 - offset; };
             // The offset as a function of u = u_near: O(u) = w G(u) + (1 - w) span [u >= u_split],
-            // with G the Gaussian law's quantile function: a0 on [0, u_a), a0 + b0 sigma (t + z(u)) on
-            // [u_a, u_b), a0 + b0 span on [u_b, 1].
-            if (ks == 1 && span >= 2) {  // the kernel's single-rounding form: clamp(center +- sigma z, 1, N - 1)
+            // with G the Gaussian law's quantile function: 0 on [0, u_a), sigma (t + z(u)) on
+            // [u_a, u_b), span on [u_b, 1].
+            if (span >= 2) {  // the kernel's single-rounding form: clamp(center +- sigma z, 1, N - 1)
                 d.add_clamped_gaussian(p_middle, static_cast<double>(q.center), sigma, 1, N - 1);
                 break;
             }
@@ -241,18 +240,18 @@ binomial_model model_of(binomial_variant variant, double N_in, double p_in, pow_
                 const double from = side ? u_split : 0.0, to = side ? 1.0 : u_split, shift = side ? (1 - w) * span : 0.0;
                 if (to <= from) continue;
                 const double atom_lo = std::max(0.0, std::min(u_a, to) - from), atom_hi = std::max(0.0, to - std::max(u_b, from));
-                if (atom_lo > 0) d.atoms.push_back({place(shift + w * a0), p_middle * atom_lo});
-                if (atom_hi > 0) d.atoms.push_back({place(shift + w * (a0 + b0 * span)), p_middle * atom_hi});
+                if (atom_lo > 0) d.atoms.push_back({place(shift), p_middle * atom_lo});
+                if (atom_hi > 0) d.atoms.push_back({place(shift + w * span), p_middle * atom_hi});
                 const double s_lo = std::max(u_a, from), s_hi = std::min(u_b, to);
                 if (s_hi <= s_lo) continue;
-                const double mu = shift + w * (a0 + b0 * sigma * t), sd = w * b0 * sigma;
+                const double mu = shift + w * sigma * t, sd = w * sigma;
                 if (!(sd > 0)) {
                     d.atoms.push_back({place(mu), p_middle * (s_hi - s_lo)});
                     continue;
                 }
                 // Clipped to the offset's range: z_of saturates at +-40 where Phi underflows.
-                const double x_lo = std::max(mu + sd * z_of(s_lo), shift + w * a0);
-                const double x_hi = std::min(mu + sd * z_of(s_hi), shift + w * (a0 + b0 * span));
+                const double x_lo = std::max(mu + sd * z_of(s_lo), shift);
+                const double x_hi = std::min(mu + sd * z_of(s_hi), shift + w * span);
                 if (lower) d.segments.push_back({p_middle, 1 + mu, sd, 1 + x_lo, 1 + x_hi});
                 else d.segments.push_back({p_middle, N - 1 - mu, sd, N - 1 - x_hi, N - 1 - x_lo});
             }

@@ -37,6 +37,7 @@
 // smooth-result gate may return E[R] first, which is the limit of a huge density).
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 
 #include "glint/binomial.hpp"
@@ -118,6 +119,37 @@ template <class real>
 grid_estimate<real> grid_sample(const vec2_t<real>& uv, const vec2_t<real>& duvdx, const vec2_t<real>& duvdy,
                                 const grid_params<real>& g, const grid_light<real>& light) {
     return detail::glsl::kernels<real>::glint_grid_sample(uv, duvdx, duvdy, detail::to_kernel(g), light);
+}
+
+// One pixel's footprint on the grid, for several lights (and glint::ibl_sample's environment):
+// the footprint, its microfacet count and its lattice vertices, computed once (the vertices when
+// a light first needs draws). grid_sample(px, g, light) gives exactly grid_sample(uv, duvdx,
+// duvdy, g, light); px is the pixel's own (not thread-safe to share while sampling).
+//
+//   auto px = glint::grid_pixel_setup(uv, duvdx, duvdy, g);
+//   for (const auto& light : lights) radiance += smooth(light) * glint::modulation(glint::grid_sample(px, g, light));
+template <class real>
+using grid_pixel = typename detail::glsl::kernels<real>::glint_grid_pixel;
+
+template <class real>
+grid_pixel<real> grid_pixel_setup(const vec2_t<real>& uv, const vec2_t<real>& duvdx, const vec2_t<real>& duvdy, const grid_params<real>& g) {
+    return detail::glsl::kernels<real>::glint_grid_pixel_setup(uv, duvdx, duvdy, detail::to_kernel(g));
+}
+
+template <class real>
+grid_estimate<real> grid_sample(grid_pixel<real>& px, const grid_params<real>& g, const grid_light<real>& light) {
+    return detail::glsl::kernels<real>::glint_grid_sample_pixel(px, detail::to_kernel(g), light);
+}
+
+// Every light of a list on one footprint: out[i] = grid_sample(uv, duvdx, duvdy, g, lights[i]),
+// with the footprint's setup done once. No allocation; count may be 0. (GLSL:
+// glint_grid_sample_lights, up to GLINT_GRID_MAX_LIGHTS = 8 lights.)
+template <class real>
+void grid_sample_lights(const vec2_t<real>& uv, const vec2_t<real>& duvdx, const vec2_t<real>& duvdy, const grid_params<real>& g,
+                        const grid_light<real>* lights, std::size_t count, grid_estimate<real>* out) {
+    const auto k = detail::to_kernel(g);
+    auto px = detail::glsl::kernels<real>::glint_grid_pixel_setup(uv, duvdx, duvdy, k);
+    for (std::size_t i = 0; i < count; ++i) out[i] = detail::glsl::kernels<real>::glint_grid_sample_pixel(px, k, lights[i]);
 }
 
 // R / E[R], the factor on the smooth result (the kernels' glint_modulation; 0 if E[R] = 0), for

@@ -60,6 +60,14 @@ ibl_estimate<real> ibl_sample(const vec2_t<real>& uv, const vec2_t<real>& duvdx,
                                                              indicators, e_d, d_h);
 }
 
+// The same on a pixel's footprint shared with its point lights (glint::grid_pixel_setup): exactly
+// ibl_sample(uv, duvdx, duvdy, ...), with the lattice vertices computed once for all of them.
+template <class real>
+ibl_estimate<real> ibl_sample(grid_pixel<real>& px, const grid_params<real>& g, const ibl_levels<real>& levels,
+                              const ibl_indicators<real>& indicators, real e_d, real d_h) {
+    return detail::glsl::kernels<real>::glint_ibl_sample_pixel(px, detail::to_kernel(g), levels, indicators, e_d, d_h);
+}
+
 struct ibl_options {
     int levels = 4;             // K, 3..8 (KK25: 4 or 8)
     float black_level = 1e-3f;  // l: luminances below it count as l when placing the levels

@@ -177,8 +177,8 @@ share_scan scan_level_shares(int variant, int pow_method) {
                         g.seed = i * 2654435761u + salt;
                         const glm::uvec3 h = glint::pcg3d(glm::uvec3(i, salt, 7u));
                         const glm::vec2 uv(glint::unit_from_bits<float>(h.x) * 300.0f, glint::unit_from_bits<float>(h.y) * 300.0f);
-                        const auto f = K::glint_footprint_from_derivatives(glm::vec2(1.0f, 0.0f), glm::vec2(0.0f, 1.0f));
-                        const auto sh = K::glint_ibl_level_shares(uv, f, K::glint_footprint_count(g, f), g, levels, K::glint_ibl_lit_levels(all, levels));
+                        auto px = K::glint_grid_pixel_setup(uv, glm::vec2(1.0f, 0.0f), glm::vec2(0.0f, 1.0f), g);
+                        const auto sh = K::glint_ibl_level_shares(px, g, levels, K::glint_ibl_lit_levels(all, levels));
                         for (int k = 1; k < levels; ++k) m[static_cast<std::size_t>(k)].add(static_cast<double>(sh.share[k]));
                     }
                     for (int k = 1; k < levels; ++k) {

@@ -296,13 +296,45 @@ GLINT_FN real glint_footprint_count(glint_grid_params g, glint_footprint f) {
     return min(exp(clamp(g.log_density, real(-80), real(80))) * f.area, real(1e30));
 }
 
-// R for one footprint and one light.
-GLINT_FN glint_grid_estimate glint_grid_sample(vec2 uv, vec2 duvdx, vec2 duvdy, glint_grid_params g, glint_grid_light light) {
+// One pixel's footprint on the grid, shared by every light and by the IBL levels of ibl.glsl:
+// the footprint, its microfacet count N, and its lattice points' triangle vertices with their
+// weights, shares and hashes (glint_footprint_vertices), computed once, when a light first needs
+// draws (lights that return the smooth result or 0 need none).
+struct glint_grid_pixel {
+    vec2 uv;
+    glint_footprint f;
+    real N;
+    bool ready;  // whether v holds the vertices
+    glint_grid_vertices v;
+};
+
+GLINT_FN glint_grid_pixel glint_grid_pixel_setup(vec2 uv, vec2 duvdx, vec2 duvdy, glint_grid_params g) {
+    glint_grid_pixel px;
+    px.uv = uv;
+    px.f = glint_footprint_from_derivatives(duvdx, duvdy);
+    px.N = glint_footprint_count(g, px.f);
+    px.ready = false;
+    px.v.count = 0;
+    for (int i = 0; i < 12; ++i) {
+        px.v.weight[i] = real(0);
+        px.v.share[i] = real(0);
+        px.v.hash[i] = uvec3(0u);
+    }
+    return px;
+}
+
+GLINT_FN void glint_grid_pixel_vertices(GLINT_INOUT(glint_grid_pixel) px, glint_grid_params g) {
+    if (px.ready) return;
+    px.v = glint_footprint_vertices(px.uv, px.f, g);
+    px.ready = true;
+}
+
+// R for one light on a pixel's footprint (the vertices computed on first need).
+GLINT_FN glint_grid_estimate glint_grid_sample_pixel(GLINT_INOUT(glint_grid_pixel) px, glint_grid_params g, glint_grid_light light) {
     glint_grid_estimate o;
     o.value = real(0);
     o.expected = real(0);
     o.draws = 0;
-    glint_footprint f = glint_footprint_from_derivatives(duvdx, duvdy);
     ivec2 sbase;
     vec4 mu = glint_slope_weights(light.slope, g.slope_cell, sbase);
     vec4 p;
@@ -317,7 +349,7 @@ GLINT_FN glint_grid_estimate glint_grid_sample(vec2 uv, vec2 duvdx, vec2 duvdy, 
     }
     o.expected = dot(mu, p);
     if (!(o.expected > real(0))) return o;  // no microfacet can reflect this light: no sampling
-    real N = glint_footprint_count(g, f);
+    real N = px.N;
     // Var(R) <= sum_j m_j^2 p_j (1 - p_j) / N + (exp(sigma^2) - 1) E[R]^2 (the lattice and
     // triangle weights only lower it: their squares sum to at most 1).
     real var_bound = dot(mu * mu, p * (vec4(real(1)) - p)) / max(N, real(1e-30)) +
@@ -327,7 +359,7 @@ GLINT_FN glint_grid_estimate glint_grid_sample(vec2 uv, vec2 duvdx, vec2 duvdy, 
         return o;
     }
     if (!(N > real(1e-30))) return o;  // no footprint, no microfacets
-    glint_grid_vertices v = glint_footprint_vertices(uv, f, g);
+    glint_grid_pixel_vertices(px, g);
     // The slope corners that can reflect, in plain arrays (a vector indexed in a loop costs a
     // switch per access in C++), and the skip test's constant part, hoisted out of the loops.
     int corners = 0;
@@ -354,18 +386,46 @@ GLINT_FN glint_grid_estimate glint_grid_sample(vec2 uv, vec2 duvdx, vec2 duvdy, 
     // log-normal factor is on) and p_j: the mean-preserving sampler sets up once per corner for them.
     glint_binomial_cache cache[4];
     for (int j = 0; j < 4; ++j) cache[j] = glint_binomial_empty_cache();
-    for (int i = 0; i < v.count; ++i) {
-        real n = N * v.share[i];
+    for (int i = 0; i < px.v.count; ++i) {
+        real n = N * px.v.share[i];
         real skip_scale = max(n, real(2));
         for (int j = 0; j < corners; ++j) {
-            uvec3 hs = glint_pcg3d(uvec3(v.hash[i].x ^ corner_x[j], v.hash[i].y ^ corner_y[j], v.hash[i].z));
+            uvec3 hs = glint_pcg3d(uvec3(px.v.hash[i].x ^ corner_x[j], px.v.hash[i].y ^ corner_y[j], px.v.hash[i].z));
             real u1 = glint_open_unit_from_bits(hs.x);
             if (skip_test && glint_surely_no_success_at(skip_scale, corner_p[j], u1)) continue;
             real u2 = glint_open_unit_from_bits(hs.y);
             glint_binomial b = glint_binomial_variant_cached(g.variant, n, corner_p[j], u1, u2, g.pow_method, cache[j]);
-            o.value += v.weight[i] * corner_m[j] * b.positive / N;  // the draw itself carries w_L
+            o.value += px.v.weight[i] * corner_m[j] * b.positive / N;  // the draw itself carries w_L
             ++o.draws;
         }
+    }
+    return o;
+}
+
+
+// R for one footprint and one light.
+GLINT_FN glint_grid_estimate glint_grid_sample(vec2 uv, vec2 duvdx, vec2 duvdy, glint_grid_params g, glint_grid_light light) {
+    glint_grid_pixel px = glint_grid_pixel_setup(uv, duvdx, duvdy, g);
+    return glint_grid_sample_pixel(px, g, light);
+}
+
+// R for up to GLINT_GRID_MAX_LIGHTS lights on one footprint: the footprint, its lattice and its
+// vertices once, then each light's slope cell and draws.
+GLINT_CONST(int) GLINT_GRID_MAX_LIGHTS = 8;
+
+struct glint_grid_estimates {
+    glint_grid_estimate e[8];
+};
+
+GLINT_FN glint_grid_estimates glint_grid_sample_lights(vec2 uv, vec2 duvdx, vec2 duvdy, glint_grid_params g, glint_grid_light lights[8],
+                                                       int count) {
+    glint_grid_estimates o;
+    glint_grid_pixel px = glint_grid_pixel_setup(uv, duvdx, duvdy, g);
+    for (int k = 0; k < GLINT_GRID_MAX_LIGHTS; ++k) {
+        o.e[k].value = real(0);
+        o.e[k].expected = real(0);
+        o.e[k].draws = 0;
+        if (k < count) o.e[k] = glint_grid_sample_pixel(px, g, lights[k]);
     }
     return o;
 }

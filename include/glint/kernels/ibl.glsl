@@ -74,23 +74,24 @@ struct glint_ibl_shares {
     int draws;
 };
 
-GLINT_FN glint_ibl_shares glint_ibl_level_shares(vec2 uv, glint_footprint f, real N, glint_grid_params g, int K,
+GLINT_FN glint_ibl_shares glint_ibl_level_shares(GLINT_INOUT(glint_grid_pixel) px, glint_grid_params g, int K,
                                                  glint_multinomial_probabilities lit) {
     glint_ibl_shares o;
     for (int k = 0; k < 8; ++k) o.share[k] = real(0);
     o.draws = 0;
+    real N = px.N;
     if (!(N > real(1e-30))) return o;
-    glint_grid_vertices v = glint_footprint_vertices(uv, f, g);
+    glint_grid_pixel_vertices(px, g);
     real lit_total = real(0);
     for (int k = 0; k < 8; ++k) lit_total += lit.p[k];
     // The triangle vertices of a lattice point share the root's N and p (glint_grid_sample).
     glint_binomial_cache root_cache = glint_binomial_empty_cache();
-    for (int i = 0; i < v.count; ++i) {
+    for (int i = 0; i < px.v.count; ++i) {
         // The multinomial's root draws the lit levels against the rest with these uniforms: if it
         // surely draws none, every count is 0 (glint_surely_no_success).
-        if (glint_surely_no_success(g, N * v.share[i], min(lit_total, real(1)), glint_multinomial_uniforms(v.hash[i], 0).x)) continue;
-        glint_multinomial_counts c = glint_multinomial_cached(N * v.share[i], lit, K - 1, v.hash[i], g.variant, g.pow_method, root_cache);
-        for (int k = 0; k < 7; ++k) o.share[k + 1] += v.weight[i] * c.count[k] / N;
+        if (glint_surely_no_success(g, N * px.v.share[i], min(lit_total, real(1)), glint_multinomial_uniforms(px.v.hash[i], 0).x)) continue;
+        glint_multinomial_counts c = glint_multinomial_cached(N * px.v.share[i], lit, K - 1, px.v.hash[i], g.variant, g.pow_method, root_cache);
+        for (int k = 0; k < 7; ++k) o.share[k + 1] += px.v.weight[i] * c.count[k] / N;
         o.draws += K - 1;
     }
     return o;
@@ -107,9 +108,10 @@ GLINT_FN glint_multinomial_probabilities glint_ibl_lit_levels(glint_multinomial_
 // The glint estimate for one footprint under the environment (KK25 Eq. 17), in grid.glsl's
 // estimate struct: value = sum_k L_k M_k / N, expected = sum_k L_k p_k, and glint_modulation
 // gives the factor on the smooth result. Same grid as glint_grid_sample, without the half-vector interpolation
-// (KK25 Sec. 3.3: IBL has no single half vector).
-GLINT_FN glint_grid_estimate glint_ibl_sample(vec2 uv, vec2 duvdx, vec2 duvdy, glint_grid_params g, glint_ibl_levels lv,
-                                             glint_ibl_indicators ind, real e_d, real d_h) {
+// (KK25 Sec. 3.3: IBL has no single half vector). On a glint_grid_pixel, so that point lights and
+// the environment share one footprint's vertices.
+GLINT_FN glint_grid_estimate glint_ibl_sample_pixel(GLINT_INOUT(glint_grid_pixel) px, glint_grid_params g, glint_ibl_levels lv,
+                                                   glint_ibl_indicators ind, real e_d, real d_h) {
     glint_grid_estimate o;
     o.value = real(0);
     o.expected = real(0);
@@ -123,8 +125,7 @@ GLINT_FN glint_grid_estimate glint_ibl_sample(vec2 uv, vec2 duvdx, vec2 duvdy, g
         second += L * L * all.p[k];
     }
     if (!(o.expected > real(0))) return o;  // nothing bright can be reflected: no sampling
-    glint_footprint f = glint_footprint_from_derivatives(duvdx, duvdy);
-    real N = glint_footprint_count(g, f);
+    real N = px.N;
     // Var(sum_k L_k M_k / N) <= sum_k L_k^2 p_k / N (each multinomial count's variance is at most
     // its mean; the covariances are negative), plus the log-normal density's share.
     real var_bound = second / max(N, real(1e-30)) + (exp(g.density_sigma * g.density_sigma) - real(1)) * o.expected * o.expected;
@@ -132,10 +133,17 @@ GLINT_FN glint_grid_estimate glint_ibl_sample(vec2 uv, vec2 duvdx, vec2 duvdy, g
         o.value = o.expected;
         return o;
     }
-    glint_ibl_shares sh = glint_ibl_level_shares(uv, f, N, g, K, glint_ibl_lit_levels(all, K));
+    glint_ibl_shares sh = glint_ibl_level_shares(px, g, K, glint_ibl_lit_levels(all, K));
     for (int k = 1; k < 8; ++k) o.value += (k < K) ? lv.radiance[k] * sh.share[k] : real(0);
     o.draws = sh.draws;
     return o;
+}
+
+// glint_ibl_sample_pixel on its own footprint.
+GLINT_FN glint_grid_estimate glint_ibl_sample(vec2 uv, vec2 duvdx, vec2 duvdy, glint_grid_params g, glint_ibl_levels lv,
+                                             glint_ibl_indicators ind, real e_d, real d_h) {
+    glint_grid_pixel px = glint_grid_pixel_setup(uv, duvdx, duvdy, g);
+    return glint_ibl_sample_pixel(px, g, lv, ind, e_d, d_h);
 }
 
 // ---------------------------------------------------------------------------------------------

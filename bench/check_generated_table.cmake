@@ -1,0 +1,25 @@
+# Whether the table that a generator prints is the one a kernel file holds: runs GENERATOR and
+# compares the text from "GLINT_FLOAT_TABLE(<NAME>" to the next "GLINT_TABLE_CLOSE;" in its
+# output with the same span of KERNEL.
+#   cmake -DGENERATOR=path -DKERNEL=path -DNAME=GLINT_... -P check_generated_table.cmake
+execute_process(COMMAND "${GENERATOR}" OUTPUT_VARIABLE printed ERROR_VARIABLE log RESULT_VARIABLE rc)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "${GENERATOR} failed (${rc}): ${log}")
+endif()
+file(READ "${KERNEL}" held)
+function(table_of text out)
+  string(FIND "${text}" "GLINT_FLOAT_TABLE(${NAME}" begin)
+  if(begin LESS 0)
+    message(FATAL_ERROR "no GLINT_FLOAT_TABLE(${NAME} found")
+  endif()
+  string(SUBSTRING "${text}" ${begin} -1 rest)
+  string(FIND "${rest}" "GLINT_TABLE_CLOSE;" end)
+  string(SUBSTRING "${rest}" 0 ${end} table)
+  set(${out} "${table}" PARENT_SCOPE)
+endfunction()
+table_of("${printed}" from_generator)
+table_of("${held}" from_kernel)
+if(NOT from_generator STREQUAL from_kernel)
+  message(FATAL_ERROR "${NAME} in ${KERNEL} differs from what ${GENERATOR} prints: regenerate it")
+endif()
+message(STATUS "${NAME}: the kernel holds what the generator prints")

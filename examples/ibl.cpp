@@ -45,10 +45,7 @@ int main(int argc, char** argv) {
     float log_density = 5.0f, roughness = 0.12f;
     for (int i = 1; i < argc; ++i) {
         const std::string a = argv[i];
-        auto value = [&]() -> std::string {
-            if (i + 1 >= argc) usage(a + " needs a value");
-            return argv[++i];
-        };
+        auto value = [&] { return flag_value(argc, argv, i, usage); };
         if (a == "--env") env_path = value();
         else if (a == "--k") {
             const std::string v = value();

@@ -39,10 +39,7 @@ settings parse(int argc, char** argv) {
     settings s;
     for (int i = 1; i < argc; ++i) {
         const std::string a = argv[i];
-        auto value = [&]() -> std::string {
-            if (i + 1 >= argc) usage(a + " needs a value");
-            return argv[++i];
-        };
+        auto value = [&] { return flag_value(argc, argv, i, usage); };
         if (a == "--light") {
             const std::string v = value();
             if (v == "point") s.scene.light = light_type::point;

@@ -89,10 +89,7 @@ int main(int argc, char** argv) {
     int w = 640, h = 400;
     for (int i = 1; i < argc; ++i) {
         const std::string a = argv[i];
-        auto value = [&]() -> std::string {
-            if (i + 1 >= argc) usage(a + " needs a value");
-            return argv[++i];
-        };
+        auto value = [&] { return flag_value(argc, argv, i, usage); };
         if (a == "--pattern") pattern = value();
         else if (a == "--normal-map") map_path = value();
         else if (a == "--texels-per-unit") texels_per_unit = parse_float(a, value(), 1, 1e6f, usage);

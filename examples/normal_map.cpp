@@ -33,10 +33,7 @@ int main(int argc, char** argv) {
     std::string out, pattern;
     for (int i = 1; i < argc; ++i) {
         const std::string a = argv[i];
-        auto value = [&]() -> std::string {
-            if (i + 1 >= argc) usage(a + " needs a value");
-            return argv[++i];
-        };
+        auto value = [&] { return flag_value(argc, argv, i, usage); };
         if (a == "--pattern") pattern = value();
         else if (a == "--size") parse_size(a, value(), p.width, p.height, usage);
         else if (a == "--seed") p.seed = static_cast<std::uint32_t>(parse_float(a, value(), 0, 4e9f, usage));

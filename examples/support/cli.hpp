@@ -10,6 +10,13 @@
 
 namespace glint_examples {
 
+// The value after the flag argv[i], advancing i past it; `fail` if the flag is the last argument.
+template <class Fail>
+std::string flag_value(int argc, char** argv, int& i, Fail fail) {
+    if (i + 1 >= argc) fail(std::string(argv[i]) + " needs a value");
+    return argv[++i];
+}
+
 // The number in `s` if it parses completely and lies in [lo, hi]; otherwise `fail` (which does not
 // return) gets a message naming the flag, the range and the text.
 template <class Fail>

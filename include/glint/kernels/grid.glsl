@@ -314,12 +314,7 @@ GLINT_FN glint_grid_pixel glint_grid_pixel_setup(vec2 uv, vec2 duvdx, vec2 duvdy
     px.f = glint_footprint_from_derivatives(duvdx, duvdy);
     px.N = glint_footprint_count(g, px.f);
     px.ready = false;
-    px.v.count = 0;
-    for (int i = 0; i < 12; ++i) {
-        px.v.weight[i] = real(0);
-        px.v.share[i] = real(0);
-        px.v.hash[i] = uvec3(0u);
-    }
+    px.v.count = 0;  // the arrays are filled by glint_grid_pixel_vertices, before any read
     return px;
 }
 

@@ -127,7 +127,7 @@ int main(int argc, char** argv) {
     g.sigma_r = sigma_r;
     const auto t0 = std::chrono::steady_clock::now();
     const auto pndf = glint::gaussian_pndf<float>::build(map, g);
-    std::fprintf(stderr, "glint_microstructure: %d x %d map, %zu elements, hierarchy %d^2 cells, %.1f MB, built in %.2f s\n", map.width(), map.height(),
+    std::fprintf(stderr, "glint_microstructure: %d x %d map, %zu elements, hierarchy %d^2 finest cells, %.1f MB, built in %.2f s\n", map.width(), map.height(),
                  pndf.element_count(), pndf.grid_size(), static_cast<double>(pndf.memory_bytes()) / 1e6,
                  std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
     const camera cam = close ? camera(w, h, vec3(0.45f, 1.05f, 1.5f), vec3(0.1f, 0.7f, 0.3f)) : camera(w, h);

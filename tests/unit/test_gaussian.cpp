@@ -258,14 +258,77 @@ TEST_CASE("P-NDF: closed-form maps (flat, constant tilt, linear field) and the l
     CHECK(ripple < 0.06);
 }
 
+// The oriented s-boxes must hold every s where an element's term is nonzero, for every footprint:
+// the shift of the lobe's mean is largest for point footprints (kappa = sigma_h^2), and s drawn
+// from the P-NDF itself reaches each lobe's cull_s edge. Tried: boxes without the shift bound, or
+// with their two axes swapped, fail here on every map (relative differences 3e-5 to 1); boxes with
+// half of the shift bound still pass (the bound is loose: the largest shifts come with offsets in
+// the weight's taper).
+TEST_CASE("P-NDF: the hierarchy's s-boxes hold every nonzero term, point footprints and lobe tails included") {
+    for (const auto kind : {glint::pattern::flakes, glint::pattern::scratches, glint::pattern::brushed, glint::pattern::pyramids}) {
+        glint::pattern_params pp;
+        pp.kind = kind, pp.width = pp.height = 32, pp.slope_rms = 0.3;
+        CAPTURE(glint::pattern_name(kind));
+        for (const int r : {1, 2}) {
+            glint::gaussian_params<double> g;
+            g.sigma_r = 0.002, g.elements_per_texel = r, g.hierarchy = glint::pndf_hierarchy::always;
+            const auto pndf = glint::gaussian_pndf<double>::build(glint::make_normal_map(pp), g);
+            REQUIRE(pndf.level_count() > 0);
+            double worst = 0;
+            int nonzero = 0;
+            for (int i = 0; i < 400; ++i) {
+                const double sigma = 1.5 * rnd(i, 50) * rnd(i, 50);  // 0 to 1.5 texels, most below 0.5
+                const auto fp = footprint({32 * rnd(i, 51), 32 * rnd(i, 52)}, covariance(sigma, sigma * rnd(i, 53), 3 * rnd(i, 54)));
+                const auto x = pndf.sample(fp, rnd(i, 55), rnd(i, 56), rnd(i, 57));
+                if (!x.valid) continue;
+                const double d = pndf.eval_direct(fp, x.s), h = pndf.eval_hierarchy(fp, x.s);
+                nonzero += d > 0;
+                worst = std::max(worst, std::fabs(h - d) / std::max(d, 1e-300));
+            }
+            MESSAGE(std::string(glint::pattern_name(kind)) << ", " << r << " per texel side: " << nonzero << " draws, worst relative difference " << worst);
+            CHECK(nonzero > 300);
+            CHECK(worst < 1e-10);
+        }
+    }
+}
+
+// build() makes the hierarchy only where it pays: on flakes (flat lobes, the normals of a few
+// cells near any s) it does; on noise rough at the texel scale (every lobe as wide as the normals'
+// spread, so the cells hold most elements) it does not, and eval is the direct sum.
+TEST_CASE("P-NDF: the hierarchy is built where it pays, and eval is the same either way") {
+    glint::pattern_params pp;
+    pp.width = pp.height = 128, pp.slope_rms = 0.15;
+    glint::gaussian_params<double> g;
+    g.sigma_r = 0.005;
+    pp.kind = glint::pattern::flakes;
+    const auto flakes = glint::make_normal_map(pp);
+    CHECK(glint::gaussian_pndf<double>::build(flakes, g).level_count() > 0);
+    pp.kind = glint::pattern::noise, pp.slope_rms = 0.1;
+    const auto noise = glint::make_normal_map(pp);
+    const auto automatic = glint::gaussian_pndf<double>::build(noise, g);
+    CHECK(automatic.level_count() == 0);
+    g.hierarchy = glint::pndf_hierarchy::always;
+    const auto always = glint::gaussian_pndf<double>::build(noise, g);
+    CHECK(always.level_count() > 0);
+    CHECK(automatic.memory_bytes() < always.memory_bytes() / 2);
+    for (int i = 0; i < 20; ++i) {
+        const auto fp = footprint({128 * rnd(i, 60), 128 * rnd(i, 61)}, covariance(1 + 20 * rnd(i, 62), 1 + 10 * rnd(i, 63), 3 * rnd(i, 64)));
+        const glm::dvec3 n = glint::pattern_normal(pp, fp.center);
+        const glm::dvec2 s(n.x, n.y);
+        CHECK(automatic.eval(fp, s) == doctest::Approx(always.eval(fp, s)).epsilon(1e-12));
+        CHECK(automatic.eval_hierarchy(fp, s) == doctest::Approx(always.eval_hierarchy(fp, s)).epsilon(1e-12));
+    }
+}
+
 TEST_CASE("P-NDF: hierarchy equals the direct sum; against brute force within the culling error; periodic; continuous") {
     for (const auto kind : {glint::pattern::noise, glint::pattern::brushed, glint::pattern::flakes, glint::pattern::scratches}) {
         glint::pattern_params pp;
         pp.kind = kind, pp.width = pp.height = 64, pp.slope_rms = 0.15;
         CAPTURE(glint::pattern_name(kind));
         glint::gaussian_params<double> g;
-        g.sigma_r = 0.01;
+        g.sigma_r = 0.01, g.hierarchy = glint::pndf_hierarchy::always;
         const auto pndf = glint::gaussian_pndf<double>::build(glint::make_normal_map(pp), g);
+        REQUIRE(pndf.level_count() > 0);
         double worst_direct = 0, l1 = 0, norm = 0;
         for (int i = 0; i < 60; ++i) {
             const double sigma = std::exp2(8 * rnd(i, 40) - 1);  // 0.5 to 128 texels

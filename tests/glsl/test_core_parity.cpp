@@ -161,6 +161,49 @@ TEST_CASE("log1p and expm1: GLSL within the tolerance table of C++ and of the ex
     CHECK(worst_e <= EXPM1_GLSL_MAX_ULP_EXACT);
 }
 
+// atan2 over a spiral of directions (every octant, magnitudes 2^-20 to 2^20, and the axes) and
+// acos over [-1, 1] with the floats next to +-1 (where 1 - x^2 matters): GLSL against C++, and both
+// against the exact value (long double).
+TEST_CASE("atan2 and acos: GLSL within the tolerance table of C++ and of the exact value") {
+    std::vector<float> ys, xs, as;
+    for (int i = 0; i < 40000; ++i) {
+        const double phi = -3.14159265358979 + 6.28318530717958 * (i + 0.5) / 40000, r = std::exp2(40.0 * ((i * 7919) % 40000) / 40000.0 - 20);
+        ys.push_back(static_cast<float>(r * std::sin(phi))), xs.push_back(static_cast<float>(r * std::cos(phi)));
+    }
+    for (const float a : {0.0f, 1.0f, -1.0f, 3.0f}) ys.push_back(a), xs.push_back(a == 3.0f ? -2.0f : 1.0f - std::fabs(a));
+    for (int i = 0; i <= 40000; ++i) {
+        const double t = -1 + 2.0 * i / 40000;
+        as.push_back(static_cast<float>(t * t * t));  // t^3: dense near 0, and reaching the ends
+    }
+    as.push_back(1.0f - 6e-8f), as.push_back(-1.0f + 6e-8f);
+    const auto g2 = from_words<float>(glint_test::map_floats({"core.glsl"}, "float", "glint_atan2(x, y)", ys, xs));
+    const auto ga = from_words<float>(glint_test::map_floats({"core.glsl"}, "float", "glint_acos(x)", as));
+    using k = glint::detail::glsl::kernels<float>;
+    std::vector<float> c2, ca;
+    double worst2 = 0, worsta = 0, worst_cpu = 0;
+    for (std::size_t i = 0; i < ys.size(); ++i) {
+        c2.push_back(k::glint_atan2(ys[i], xs[i]));
+        const long double exact = atan2l(ys[i], xs[i]);
+        worst2 = std::max(worst2, glint_test::ulp_error(g2[i], static_cast<double>(exact)));
+        worst_cpu = std::max(worst_cpu, glint_test::ulp_error(c2[i], static_cast<double>(exact)));
+    }
+    for (std::size_t i = 0; i < as.size(); ++i) {
+        ca.push_back(k::glint_acos(as[i]));
+        const long double exact = acosl(as[i]);
+        worsta = std::max(worsta, glint_test::ulp_error(ga[i], static_cast<double>(exact)));
+        worst_cpu = std::max(worst_cpu, glint_test::ulp_error(ca[i], static_cast<double>(exact)));
+    }
+    const ulp_stats s2 = compare(g2, c2), sa = compare(ga, ca);
+    MESSAGE("atan2 GLSL vs C++: " << s2.count << " inputs, rate " << s2.rate() << ", max " << s2.max << " ulp; vs exact " << worst2 << " ulp");
+    MESSAGE("acos GLSL vs C++: " << sa.count << " inputs, rate " << sa.rate() << ", max " << sa.max << " ulp; vs exact " << worsta
+                                 << " ulp; C++ vs exact " << worst_cpu << " ulp");
+    CHECK(s2.max <= ATAN2_GLSL_MAX_ULP_DISTANCE);
+    CHECK(sa.max <= ATAN2_GLSL_MAX_ULP_DISTANCE);
+    CHECK(worst2 <= ATAN2_GLSL_MAX_ULP_EXACT);
+    CHECK(worsta <= ATAN2_GLSL_MAX_ULP_EXACT);
+    CHECK(worst_cpu <= ATAN2_GLSL_MAX_ULP_EXACT);
+}
+
 TEST_CASE("erfc: GLSL within the tolerance table of C++ and of the exact value") {
     std::vector<float> xs;
     for (double x = -4; x <= 9; x += 1e-4) xs.push_back(static_cast<float>(x));

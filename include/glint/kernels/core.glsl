@@ -282,3 +282,50 @@ GLINT_FN real glint_any_success(real p, real N, int method) {
     if (method == GLINT_POW_KK25) return glint_any_success_kk25(p, N);
     return glint_any_success_expm1(p, N);
 }
+
+// ---------------------------------------------------------------------------------------------
+// atan2 and acos to a few ulp. GLSL leaves the precision of its atan and acos undefined (4.50,
+// Sec. 4.7.1), and Mesa llvmpipe's are up to 5e-5 off in the equirectangular uv they give
+// (docs/conventions.md): a texel's hundredth on a 256-wide map, enough to move an environment
+// lookup by 1e-3. These use only arithmetic, division and sqrt.
+
+GLINT_CONST(real) GLINT_PI = real(3.14159265358979323846);  // 21 digits
+GLINT_CONST(real) GLINT_INV_TWO_PI = real(0.159154943091895335769);  // 1 / (2 pi), 21 digits
+
+// atan(t) for |t| <= tan(pi / 12) = 0.268: its Taylor series t sum_k (-1)^k t^2k / (2k + 1) in
+// Horner form, whose terms fall by t^2 <= 0.0718 each; truncated after k = 6 in float (error below
+// 0.0718^7 / 15 = 6e-10 relative) and after k = 13 in double (below 0.0718^14 / 29 = 3e-18).
+GLINT_FN real glint_atan_reduced(real t) {
+    real z = t * t;
+    int terms = GLINT_DOUBLE ? 14 : 7;
+    real sum = real(0);
+    for (int k = terms - 1; k >= 0; --k) sum = real(1) / real(2 * k + 1) - z * sum;
+    return t * sum;
+}
+
+// atan2(y, x) in [-pi, pi]; 0 for (0, 0) and for non-finite input. The ratio of the smaller to
+// the larger magnitude, t in [0, 1], is reduced to |t'| <= tan(pi / 12) by
+// atan(t) = pi / 6 + atan((t - c) / (1 + t c)), c = 1 / sqrt(3), where t > tan(pi / 12); then the
+// octant and quadrant by atan(1 / t) = pi / 2 - atan(t) and the signs. Measured error in
+// tests/glsl/test_core_parity.cpp.
+GLINT_FN real glint_atan2(real y, real x) {
+    real ax = abs(x), ay = abs(y);
+    real hi = max(ax, ay), lo = min(ax, ay);
+    if (!(hi > real(0)) || !(hi < real(3.4e38))) return real(0);
+    real t = lo / hi;
+    real a = glint_atan_reduced(t);
+    if (t > real(0.267949192431122706473)) {  // tan(pi / 12) = 2 - sqrt(3), 21 digits
+        real c = real(0.577350269189625764509);  // 1 / sqrt(3), 21 digits
+        a = GLINT_PI / real(6) + glint_atan_reduced((t - c) / (real(1) + t * c));
+    }
+    if (ay > ax) a = GLINT_PI / real(2) - a;
+    if (x < real(0)) a = GLINT_PI - a;
+    return (y < real(0)) ? -a : a;
+}
+
+// acos(x) = atan2(sqrt((1 - x)(1 + x)), x), x clamped to [-1, 1] (the product keeps 1 - x^2's
+// precision near |x| = 1).
+GLINT_FN real glint_acos(real x) {
+    real c = clamp(x, real(-1), real(1));
+    return glint_atan2(sqrt((real(1) - c) * (real(1) + c)), c);
+}

@@ -174,9 +174,10 @@ GLINT_FN glint_bilinear_taps glint_bilinear(vec2 uv, int width, int height) {
 }
 
 // The equirectangular coordinates of a direction (y up; u = 1/2 looks along -z; v = 0 at the
-// zenith), and back.
+// zenith), and back. The forward map uses glint_atan2 and glint_acos (core.glsl), not the
+// builtins, whose GLSL precision is undefined.
 GLINT_FN vec2 glint_equirect_uv(vec3 d) {
-    return vec2(atan(d.x, -d.z) * GLINT_INV_TWO_PI + real(0.5), acos(clamp(d.y, real(-1), real(1))) / GLINT_PI);
+    return vec2(glint_atan2(d.x, -d.z) * GLINT_INV_TWO_PI + real(0.5), glint_acos(d.y) / GLINT_PI);
 }
 
 GLINT_FN vec3 glint_equirect_direction(vec2 uv) {

@@ -8,8 +8,7 @@
 // standardized slope of a direction v with v.z > 0 is u = (v.x / (v.z alpha_x), v.y / (v.z alpha_y)):
 // in it both NDFs are isotropic.
 
-GLINT_CONST(real) GLINT_PI = real(3.14159265358979323846);  // 21 digits
-GLINT_CONST(real) GLINT_INV_TWO_PI = real(0.159154943091895335769);  // 1 / (2 pi), 21 digits
+// GLINT_PI and GLINT_INV_TWO_PI: core.glsl.
 GLINT_CONST(real) GLINT_SQRT_PI = real(1.77245385090551602730);  // 21 digits
 GLINT_CONST(int) GLINT_NDF_GGX = 0;
 GLINT_CONST(int) GLINT_NDF_BECKMANN = 1;

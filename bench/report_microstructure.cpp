@@ -71,14 +71,13 @@ section microstructure_section(double min_time) {
         md << "`" << glint::pattern_name(kind) << "`: build " << fmt(build, "%.2f") << " s (" << fmt(1e9 * build / texels, "%.0f") << " ns per texel); memory "
            << fmt(static_cast<double>(pndf.memory_bytes()) / 1e6, "%.1f") << " MB (" << fmt(static_cast<double>(pndf.memory_bytes()) / texels, "%.0f")
            << " bytes per texel: 32 for the element, the rest its s-box";
-        if (pndf.level_count() == 0) {
-            md << "; no hierarchy: build() found that it would not pay on this map).\n\n";
-        } else {
-            md << ", the cell lists and position trees; " << pndf.grid_size() << "^2 cells at the finest of " << pndf.level_count()
-               << " normal-space levels; elements per level, finest first:";
-            for (const std::size_t c : pndf.level_elements()) md << " " << c;
-            md << ").\n\n";
-        }
+        md << ", the cell lists and position trees; " << pndf.grid_size() << "^2 cells at the finest of " << pndf.level_count()
+           << " normal-space levels; elements per level, finest first:";
+        for (const std::size_t c : pndf.level_elements()) md << " " << c;
+        glint::gaussian_params<float> none = g;
+        none.hierarchy = glint::pndf_hierarchy::none;
+        md << "; without the hierarchy, gaussian_params::hierarchy = none: "
+           << fmt(static_cast<double>(glint::gaussian_pndf<float>::build(map, none).memory_bytes()) / texels, "%.0f") << " bytes per texel).\n\n";
         md << "| footprint sd (texels) | eval ns / query | brute force ns / query | speed-up | relative L1 error vs reference |\n|---|---|---|---|---|\n";
         for (const float sigma : {1.0f, 8.0f, 64.0f, 512.0f}) {
             const int n = sigma >= 512 ? 4 : 32;

@@ -53,9 +53,8 @@
 // 2.4 evaluated per one that contributes). That count still grows with the footprint's area at a
 // fixed s: an exact sum cannot do better, and only prefiltered node NDFs (XTXW24's maps, ZXW's
 // K-lobes) make the cost sublinear. Where the lists would be longer than the footprint's lattice
-// (maps whose lobes are as wide as their normals' spread), eval sums the lattice directly instead,
-// and build() leaves the hierarchy out where it would not pay for nearly any s
-// (gaussian_params::hierarchy; build_grid says how it decides). Footprints so wide that the
+// (maps whose lobes are as wide as their normals' spread), eval sums the lattice directly instead;
+// such maps can leave the hierarchy out (gaussian_params::hierarchy). Footprints so wide that the
 // periodic images blur into the map's average (large_footprint below: error below 4e-8) use the
 // continuum limit of the periodic sum, sum_i marginal_i(s) / map area, which is exact as the
 // footprint grows (the lobe's mean shift, averaged over the images, adds sigma_h^4 J kappa^-1 J^T
@@ -101,9 +100,12 @@ texel_footprint<real> footprint_from_uv_derivatives(const vec2_t<real>& uv, cons
     return f;
 }
 
-// Whether build() makes the hierarchy: where it pays (automatic: see build_grid), always, or
-// never (eval then sums the lattice directly; 48 bytes per element).
-enum class pndf_hierarchy { automatic, always, never };
+// Whether build() makes the hierarchy (eval then uses it per query where it pays), or not (eval
+// sums the lattice directly: 48 bytes per element instead of 200 to 350, for maps rough at the
+// texel scale, where it never pays; docs/microstructure.md). Choosing by sampling s at the
+// elements' own normals was tried and dropped: on a mostly flat map with grooves it found no
+// gain, and its renders were 50x (point light) to 260x (environment) slower without it.
+enum class pndf_hierarchy { build, none };
 
 template <class real>
 struct gaussian_params {
@@ -112,7 +114,7 @@ struct gaussian_params {
     real cull_u = real(3.5);     // footprint culling radius (Mahalanobis; tapered from cull_u - 1), [2, 8]
     real cull_s = real(4);       // lobe culling radius (Mahalanobis), [1, 8]
     int direct_max_side = 128;   // eval_direct and GLSL: at most this many lattice steps each side
-    pndf_hierarchy hierarchy = pndf_hierarchy::automatic;
+    pndf_hierarchy hierarchy = pndf_hierarchy::build;
 };
 
 // A half vector drawn from the P-NDF: its projected-disk point s, h = (s, sqrt(1 - |s|^2)), and
@@ -194,7 +196,7 @@ public:
         // Smith roughness for G (notes: Beckmann alpha^2 = 2 Var(p) per axis): the mean squared
         // slope |p|^2 over both axes (isotropic: 2 Var per axis), plus the lobes' own 2 sigma_r^2.
         p.alpha_g_ = std::sqrt(std::max(real(1e-8), slope2 / static_cast<real>(n) + real(2) * g.sigma_r * g.sigma_r));
-        if (g.hierarchy != pndf_hierarchy::never) p.build_grid(g.hierarchy == pndf_hierarchy::always);
+        if (g.hierarchy == pndf_hierarchy::build) p.build_grid();
         return p;
     }
 
@@ -310,7 +312,7 @@ public:
     // The Smith roughness used by brdf(): sqrt(mean |slope|^2 + 2 sigma_r^2) over the elements.
     real alpha_g() const { return alpha_g_; }
     // Cells per side of the finest normal-space grid, and the number of grid levels (the coarsest
-    // is one cell); 0 and 0 where build() found that the hierarchy would not pay.
+    // is one cell); 0 and 0 without the hierarchy (gaussian_params::hierarchy).
     int grid_size() const { return level_size_.empty() ? 0 : level_size_.front(); }
     int level_count() const { return static_cast<int>(level_size_.size()); }
     // How many elements are listed at each level (finest first).
@@ -548,7 +550,7 @@ private:
             }
     }
 
-    void build_grid(bool always) {
+    void build_grid() {
         const std::size_t n = bound_.size();
         // The finest level's cells about four times the median s-radius on a side: a power of two,
         // 8 to 256 per side; each coarser level halves it, down to one cell.
@@ -584,21 +586,6 @@ private:
         }
         cell_begin_.assign(cells + 1, 0);
         for (std::size_t c = 0; c < cells; ++c) cell_begin_[c + 1] = cell_begin_[c] + count[c];
-        // No hierarchy where it would not pay: at the normals of 4096 elements spread over the
-        // map, the lists of the cells holding them would be shorter than 2/3 of all elements (the
-        // test of hierarchy_pays for any footprint) for fewer than 1 in 10. Maps rough at the
-        // texel scale (every lobe as wide as the normals' spread) then keep 48 bytes per element
-        // instead of several hundred; eval sums the lattice directly, as it would anyway.
-        std::size_t paying = 0, sampled = 0;
-        for (std::size_t e = 0; e < n; e += std::max<std::size_t>(1, n / 4096), ++sampled) {
-            double listed = 0;
-            for (int l = 0; l < level_count(); ++l) listed += static_cast<double>(count[cell_of(vec2(data_[2 * e].z, data_[2 * e].w), l)]);
-            paying += 1.5 * listed < static_cast<double>(n);
-        }
-        if (!always && 10 * paying < sampled) {
-            level_size_.clear(), level_first_.clear(), level_.clear(), cell_begin_.assign(1, 0), node_begin_.clear(), nodes_.clear(), listed_.clear();
-            return;
-        }
         listed_.resize(cell_begin_.back());
         std::vector<std::uint32_t> fill(cell_begin_.begin(), cell_begin_.end() - 1);
         // Elements in Morton order of their lattice position, so each cell's list comes out sorted.

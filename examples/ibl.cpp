@@ -18,7 +18,7 @@
 #include <glint/ibl.hpp>
 #include <glint/io/exr.hpp>
 
-#include "lights_scene.hpp"
+#include "ibl_scene.hpp"
 #include "support/cli.hpp"
 #include "support/render.hpp"
 
@@ -78,35 +78,13 @@ int main(int argc, char** argv) {
         std::fprintf(stderr, "glint_ibl: %s\n", e.what());
         return 1;
     }
-    const camera cam(w, h, vec3(0.0f, 0.75f, 3.2f), sphere_centre);
-    const float sa = std::sqrt(roughness);
-    const float dh = env.total_area(roughness);
+    const camera cam = ibl_camera(w, h);
+    ibl_settings settings;
+    settings.smooth = smooth, settings.seed = seed, settings.log_density = log_density, settings.roughness = roughness;
     std::vector<float> rgb(3 * static_cast<std::size_t>(w) * static_cast<std::size_t>(h));
     const render_timing t = render_rows(h, "glint_ibl: rendering " + std::to_string(w) + "x" + std::to_string(h), [&](int y) {
         for (int x = 0; x < w; ++x) {
-            const float fx = static_cast<float>(x) + 0.5f, fy = static_cast<float>(y) + 0.5f;
-            const vec3 d = cam.ray(fx, fy);
-            hit ht = intersect(cam.eye, d);
-            vec3 L;
-            if (!ht.found || !ht.sphere) {
-                L = env.lookup(d, 0.0f).radiance;  // the environment itself (no ground plane here)
-            } else {
-                vec2 duvdx, duvdy;
-                footprint_derivatives(cam, ht, fx, fy, duvdx, duvdy);
-                const float cos_o = std::max(glm::dot(-d, ht.n), 1e-4f);
-                const vec3 r = glm::reflect(d, ht.n);
-                const auto s = env.lookup(r, sa);
-                float m = 1.0f;
-                if (!smooth) {
-                    glint::grid_params<float> g;
-                    g.log_density = log_density;
-                    g.seed = seed * 0x9E3779B9u;
-                    const auto e = glint::ibl_sample(ht.uv, duvdx, duvdy, g, env.levels(), s.indicators, env.visible_area(cos_o, sa), dh);
-                    m = glint::modulation(e);
-                }
-                const float albedo = env.albedo(cos_o, sa);
-                for (int c = 0; c < 3; ++c) L[c] = glint::fresnel_conductor(silver_eta[c], silver_k[c], cos_o) * albedo * s.radiance[c] * m;
-            }
+            const vec3 L = render_ibl_pixel(env, settings, cam, x, y);
             const std::size_t i = 3 * (static_cast<std::size_t>(y) * static_cast<std::size_t>(w) + static_cast<std::size_t>(x));
             rgb[i] = L.x, rgb[i + 1] = L.y, rgb[i + 2] = L.z;
         }

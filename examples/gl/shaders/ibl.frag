@@ -1,0 +1,39 @@
+// glint_gl: the IBL scene's sphere, shaded as examples/ibl_scene.hpp shade_ibl() does on the CPU,
+// with the footprint from dFdxFine / dFdyFine of uv (y negated: the CPU's rows run downwards).
+in vec3 v_position;
+in vec3 v_normal;
+in vec2 v_uv;
+layout(location = 0) out vec4 o_color;
+#if GLINT_GL_GBUFFER
+layout(location = 1) out vec4 o_uv_dx;
+layout(location = 2) out vec4 o_dy_kind;
+layout(location = 3) out vec4 o_position;
+layout(location = 4) out vec4 o_normal;
+#endif
+
+void main() {
+    vec3 n = normalize(v_normal);
+    vec2 duvdx = dFdxFine(v_uv), duvdy = -dFdyFine(v_uv);
+    vec3 d = normalize(v_position - u_eye);
+    float sa = sqrt(u_roughness);
+    float cos_o = max(dot(-d, n), 1e-4);
+    vec3 radiance;
+    glint_ibl_indicators ind;
+    glint_gl_lookup(reflect(d, n), sa, radiance, ind);
+    float m = 1.0;
+    if (u_glints != 0) {
+        vec2 alpha = vec2(u_roughness);
+        float dh = glint_total_area(0, alpha);  // GGX
+        m = glint_modulation(glint_ibl_sample(v_uv, duvdx, duvdy, u_grid, u_levels, ind, glint_gl_table(1, sqrt(max(cos_o, 0.0)), sa), dh));
+    }
+    float albedo = glint_gl_table(0, sqrt(max(cos_o, 0.0)), sa);
+    vec3 L;
+    for (int c = 0; c < 3; ++c) L[c] = glint_fresnel_conductor(u_silver_eta[c], u_silver_k[c], cos_o) * albedo * radiance[c] * m;
+    o_color = vec4(L, 1.0);
+#if GLINT_GL_GBUFFER
+    o_uv_dx = vec4(v_uv, duvdx);
+    o_dy_kind = vec4(duvdy, 1.0, 1.0);
+    o_position = vec4(v_position, 1.0);
+    o_normal = vec4(n, 1.0);
+#endif
+}

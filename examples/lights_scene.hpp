@@ -43,6 +43,13 @@ constexpr float uv_per_unit = 100.0f;  // microfacet-grid uv per unit of surface
 const vec3 sphere_centre(0.0f, 0.75f, 0.0f);
 constexpr float sphere_radius = 0.75f;
 
+// The sphere's tangent frame at a hit whose normal h.n is set: t along increasing phi, b = n x t.
+inline void sphere_frame(hit& h) {
+    const float s = std::max(std::sqrt(h.n.x * h.n.x + h.n.z * h.n.z), 1e-6f);
+    h.t = vec3(-h.n.z / s, 0.0f, h.n.x / s);
+    h.b = glm::cross(h.n, h.t);
+}
+
 inline hit intersect(const vec3& o, const vec3& d) {
     hit h;
     // Sphere.
@@ -56,9 +63,7 @@ inline hit intersect(const vec3& o, const vec3& d) {
             h.n = glm::normalize(h.p - sphere_centre);
             const float phi = std::atan2(h.n.z, h.n.x), theta = std::acos(glm::clamp(h.n.y, -1.0f, 1.0f));
             h.uv = vec2(phi, theta) * (sphere_radius * uv_per_unit);
-            const float s = std::max(std::sqrt(h.n.x * h.n.x + h.n.z * h.n.z), 1e-6f);
-            h.t = vec3(-h.n.z / s, 0.0f, h.n.x / s);  // along increasing phi
-            h.b = glm::cross(h.n, h.t);
+            sphere_frame(h);
         }
     }
     // Plane y = 0.
@@ -121,6 +126,17 @@ inline vec3 background(const vec3& d) {
     if (d.y < 0) return vec3(0.004f, 0.004f, 0.005f);  // the plane, seen in the sphere
     const float t = glm::clamp(d.y * 2.5f, 0.0f, 1.0f);
     return glm::mix(vec3(0.060f, 0.045f, 0.050f), vec3(0.010f, 0.016f, 0.040f), t);
+}
+
+// The grid parameters of both surfaces; shade() adds 1 (sphere) or 2 (plane) to the seed, which
+// is seed x 0x9E3779B9 (the golden ratio in 32 bits, so that neighbouring seeds decorrelate).
+inline glint::grid_params<float> lights_grid(const scene_options& opt) {
+    glint::grid_params<float> g;
+    g.log_density = opt.log_density;
+    g.variant = opt.variant;
+    g.smooth_tolerance = opt.smooth_tolerance;
+    g.seed = opt.seed * 0x9E3779B9u;
+    return g;
 }
 
 struct shading_counters {
@@ -187,11 +203,8 @@ inline vec3 shade(const scene_options& opt, const light_setup& ls, const hit& h,
         specular = g2 * radiance * glm::dot(hv, wi_c) * d_omega / wo.z;
     if (!(specular > 0)) return result;
     if (!opt.smooth) {
-        glint::grid_params<float> g;
-        g.log_density = opt.log_density;
-        g.variant = opt.variant;
-        g.smooth_tolerance = opt.smooth_tolerance;
-        g.seed = opt.seed * 0x9E3779B9u + (h.sphere ? 1u : 2u);
+        glint::grid_params<float> g = lights_grid(opt);
+        g.seed += h.sphere ? 1u : 2u;
         const auto light = ls.type == light_type::point ? glint::grid_point_light(glint::ndf::ggx, alpha, dh, hv)
                                                         : glint::grid_extended_light(std::min(1.0f, d_omega / dh), hv);
         const auto e = glint::grid_sample(h.uv, duvdx, duvdy, g, light);

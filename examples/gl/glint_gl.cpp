@@ -311,12 +311,7 @@ void set_lights(GLuint p, const scene_options& opt, const light_setup& ls) {
     set(p, "u_plane_diffuse", plane_diffuse);
     set(p, "u_flake_coverage", flake_coverage);
     set(p, "u_uv_per_unit", uv_per_unit);
-    glint::grid_params<float> g;
-    g.log_density = opt.log_density;
-    g.variant = opt.variant;
-    g.smooth_tolerance = opt.smooth_tolerance;
-    g.seed = opt.seed * 0x9E3779B9u;  // the shader adds 1 (sphere) or 2 (plane), as shade() does
-    set_grid(p, g);
+    set_grid(p, lights_grid(opt));  // the shader adds 1 (sphere) or 2 (plane) to the seed, as shade() does
     set(p, "u_glints", opt.smooth ? 0 : 1);
     set(p, "u_roughness", opt.roughness);
 }
@@ -427,10 +422,8 @@ void cpu_images(const scene& s, const glint::environment* env, int w, int h, con
                 ht.n = vec3(normal[4 * i], normal[4 * i + 1], normal[4 * i + 2]);
                 ht.uv = vec2(uv_dx[4 * i], uv_dx[4 * i + 1]);
                 const vec2 duvdx(uv_dx[4 * i + 2], uv_dx[4 * i + 3]), duvdy(dy_kind[4 * i], dy_kind[4 * i + 1]);
-                if (ht.sphere) {  // the frame of lights_scene.hpp intersect(), from the interpolated normal
-                    const float sq = std::max(std::sqrt(ht.n.x * ht.n.x + ht.n.z * ht.n.z), 1e-6f);
-                    ht.t = vec3(-ht.n.z / sq, 0.0f, ht.n.x / sq);
-                    ht.b = glm::cross(ht.n, ht.t);
+                if (ht.sphere) {  // the frame of intersect(), from the interpolated normal
+                    sphere_frame(ht);
                 } else {
                     ht.t = vec3(1, 0, 0), ht.b = vec3(0, 0, -1);
                 }

@@ -297,9 +297,23 @@ GLINT_CONST(real) GLINT_INV_TWO_PI = real(0.159154943091895335769);  // 1 / (2 p
 // 0.0718^7 / 15 = 6e-10 relative) and after k = 13 in double (below 0.0718^14 / 29 = 3e-18).
 GLINT_FN real glint_atan_reduced(real t) {
     real z = t * t;
-    int terms = GLINT_DOUBLE ? 14 : 7;
     real sum = real(0);
-    for (int k = terms - 1; k >= 0; --k) sum = real(1) / real(2 * k + 1) - z * sum;
+    if (GLINT_DOUBLE) {
+        sum = real(1) / real(27) - z * sum;
+        sum = real(1) / real(25) - z * sum;
+        sum = real(1) / real(23) - z * sum;
+        sum = real(1) / real(21) - z * sum;
+        sum = real(1) / real(19) - z * sum;
+        sum = real(1) / real(17) - z * sum;
+        sum = real(1) / real(15) - z * sum;
+    }
+    sum = real(1) / real(13) - z * sum;
+    sum = real(1) / real(11) - z * sum;
+    sum = real(1) / real(9) - z * sum;
+    sum = real(1) / real(7) - z * sum;
+    sum = real(1) / real(5) - z * sum;
+    sum = real(1) / real(3) - z * sum;
+    sum = real(1) - z * sum;
     return t * sum;
 }
 

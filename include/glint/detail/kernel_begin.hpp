@@ -33,6 +33,11 @@ using namespace glm;  // NOLINT: confined to glint::detail::glsl
 // nothing (a shader storage buffer named glint_element_data).
 #define GLINT_ELEMENT_DATA_PARAM const vec4* glint_element_data,
 #define GLINT_ELEMENT_DATA_ARG glint_element_data,
+// The table of kernels/scratch.glsl: in C++ a parameter (and its argument) read by
+// GLINT_SCRATCH_FETCH, in GLSL nothing (an SSBO or a fetch the user defines).
+#define GLINT_SCRATCH_DATA_PARAM const vec4* glint_scratch_data,
+#define GLINT_SCRATCH_DATA_ARG glint_scratch_data,
+#define GLINT_SCRATCH_FETCH(k) glint_scratch_data[k]
 // A named constant (in GLSL: `const T`).
 #define GLINT_CONST(T) static constexpr T
 // A constant table of n floats (n a multiple of 4), written GLINT_FLOAT_TABLE(name, n)

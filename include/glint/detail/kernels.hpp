@@ -23,6 +23,7 @@ struct kernels {
 #include "glint/kernels/grid.glsl"
 #include "glint/kernels/ibl.glsl"
 #include "glint/kernels/gaussian.glsl"
+#include "glint/kernels/scratch.glsl"
 };
 
 }  // namespace glsl

@@ -17,6 +17,8 @@
 #define GLINT_PRECISE precise
 #define GLINT_ELEMENT_DATA_PARAM
 #define GLINT_ELEMENT_DATA_ARG
+#define GLINT_SCRATCH_DATA_PARAM
+#define GLINT_SCRATCH_DATA_ARG
 // True in the C++ double instantiation; GLSL computes in float.
 const bool GLINT_DOUBLE = false;
 #endif

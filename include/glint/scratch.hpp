@@ -745,8 +745,11 @@ scratch_table::view_t<real> scratch_table::view() const {
 
 // A scratch distribution (RGB16 Sec. 5.3, Eq. 7, Table 1): `layers` layers, layer k oriented at
 // main_deg + Theta_k, Theta_k uniform in [-spread_deg/2, spread_deg/2] (degrees, as the paper's
-// Table 1), offset xi_k uniform in [-1, 1]^2, mean scratch length and width in surface units (uv),
-// Worley threshold density d.
+// Table 1), mean scratch length and width in surface units (uv), Worley threshold density d. All
+// layers rotate and offset one noise pattern (RGB16 Sec. 5.3), periodic over `period` cells (a
+// power of two) so that one baked coverage pyramid serves them all; layer k's offset xi_k is
+// uniform over the whole period (RGB16 draws it in [-1, 1]^2, which leaves layers of similar angle
+// copies of each other within a cell: ours).
 struct scratch_distribution {
     int layers = 6;            // [1, 64]
     double spread_deg = 5;     // Theta: [0, 360]
@@ -754,6 +757,7 @@ struct scratch_distribution {
     double length = 0.1;       // l > 0
     double width = 2e-4;       // w > 0
     double density = 0.2;      // d in [0, 1]
+    int period = 64;           // cells of the noise pattern: a power of two in [1, 4096]
     std::uint32_t seed = 0;
 };
 
@@ -767,18 +771,22 @@ std::vector<scratch_layer<real>> make_scratch_layers(const scratch_distribution&
     if (!(d.length > 0 && std::isfinite(d.length))) throw error(what + "length = " + detail::scratch_number(d.length) + " is not positive");
     if (!(d.width > 0 && std::isfinite(d.width))) throw error(what + "width = " + detail::scratch_number(d.width) + " is not positive");
     if (!(d.density >= 0 && d.density <= 1)) throw error(what + "density = " + detail::scratch_number(d.density) + " is outside [0, 1]");
+    if (d.period < 1 || d.period > 4096 || (d.period & (d.period - 1)) != 0)
+        throw error(what + "period = " + std::to_string(d.period) + " is not a power of two in [1, 4096]");
     std::vector<scratch_layer<real>> out;
     const double deg = 0.017453292519943295769;  // pi / 180, 20 digits
+    const std::uint32_t seed = pcg3d(glm::uvec3(d.seed, 0x9e3779b9u, 0x5c4a7c11u)).x;
     for (int k = 0; k < d.layers; ++k) {
         const glm::uvec3 h = pcg3d(glm::uvec3(static_cast<unsigned>(k), d.seed, 0x5c4a7c11u));
         const double theta = (d.main_deg + (detail::scratch_unit(h.x) - 0.5) * d.spread_deg) * deg;
         scratch_layer<real> L{};
         L.dir = vec2_t<real>(static_cast<real>(std::cos(theta)), static_cast<real>(std::sin(theta)));
-        L.offset = vec2_t<real>(static_cast<real>(2 * detail::scratch_unit(h.y) - 1), static_cast<real>(2 * detail::scratch_unit(h.z) - 1));
+        L.offset = vec2_t<real>(static_cast<real>(d.period * detail::scratch_unit(h.y)), static_cast<real>(d.period * detail::scratch_unit(h.z)));
         L.inv_length = static_cast<real>(1 / d.length);
         L.inv_width = static_cast<real>(1 / d.width);
         L.density = static_cast<real>(d.density);
-        L.seed = pcg3d(glm::uvec3(static_cast<unsigned>(k), d.seed, 0x9e3779b9u)).x;
+        L.seed = seed;
+        L.period = d.period;
         out.push_back(L);
     }
     return out;
@@ -792,6 +800,168 @@ template <class real>
 real scratch_alpha_footprint(const scratch_layer<real>& L, const vec2_t<real>& x, const vec2_t<real>& a, const vec2_t<real>& b,
                              const vec2_t<real>& jitter = vec2_t<real>(real(0.5))) {
     return detail::glsl::kernels<real>::glint_scratch_alpha_footprint(L, x, a, b, jitter);
+}
+
+template <class real>
+using scratch_lit = typename detail::glsl::kernels<real>::glint_scratch_lit;
+template <class real>
+using scratch_pick = typename detail::glsl::kernels<real>::glint_scratch_pick;
+
+// The whole SV-BRDF's data (RGB16 Sec. 4.3, 5.3): a table, a distribution's layers and the baked
+// coverage pyramid of their shared noise pattern, in one vec4 buffer (layout in
+// kernels/scratch.glsl, glint_scratch_material_header) that the kernels read as they read a table.
+// Coverage: level 0 holds texels_per_cell^2 texels per noise cell, each the exact fraction of its
+// square inside a scratch (decided from F1 at the centre where F1 is farther than the half
+// diagonal from d, F1 being 1-Lipschitz, else from 4 x 4 points), then box mips down to 1 texel:
+// the top is the pattern's area fraction, the stationary limit of Eq. 3.
+class scratch_material {
+public:
+    static scratch_material build(const scratch_table& table, const scratch_distribution& d, int texels_per_cell = 8) {
+        const std::string what = "glint::scratch_material::build: ";
+        if (texels_per_cell < 1 || texels_per_cell > 64 || (texels_per_cell & (texels_per_cell - 1)) != 0)
+            throw error(what + "texels_per_cell = " + std::to_string(texels_per_cell) + " is not a power of two in [1, 64]");
+        if (static_cast<long>(d.period) * texels_per_cell > 8192)
+            throw error(what + "period x texels_per_cell = " + std::to_string(static_cast<long>(d.period) * texels_per_cell) + " exceeds 8192");
+        scratch_material m;
+        m.layers_d_ = make_scratch_layers<double>(d);
+        m.layers_f_ = make_scratch_layers<float>(d);
+        const int R0 = d.period * texels_per_cell;
+        m.r0_ = R0;
+        // Level 0.
+        std::vector<std::vector<double>> levels(1, std::vector<double>(static_cast<std::size_t>(R0) * static_cast<std::size_t>(R0)));
+        const auto& L = m.layers_d_[0];
+        using KD = detail::glsl::kernels<double>;
+        const double tpc = texels_per_cell, half_diag = 0.70710678118654752440 / tpc;  // sqrt(1/2), 20 digits
+        std::atomic<int> next{0};
+        const auto work = [&] {
+            for (int y; (y = next.fetch_add(1)) < R0;)
+                for (int x = 0; x < R0; ++x) {
+                    const glm::dvec2 c((x + 0.5) / tpc, (y + 0.5) / tpc);
+                    const double f1 = KD::glint_worley_f1(c, L.seed, L.period);
+                    double v;
+                    if (f1 - d.density > half_diag) v = 0;
+                    else if (d.density - f1 > half_diag) v = 1;
+                    else {
+                        int in = 0;
+                        for (int j = 0; j < 4; ++j)
+                            for (int i = 0; i < 4; ++i)
+                                in += KD::glint_worley_f1(glm::dvec2((x + (i + 0.5) / 4) / tpc, (y + (j + 0.5) / 4) / tpc), L.seed, L.period) <= d.density;
+                        v = in / 16.0;
+                    }
+                    levels[0][static_cast<std::size_t>(x) + static_cast<std::size_t>(R0) * static_cast<std::size_t>(y)] = v;
+                }
+        };
+        const int threads = std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+        std::vector<std::thread> pool;
+        for (int k = 1; k < threads; ++k) pool.emplace_back(work);
+        work();
+        for (auto& th : pool) th.join();
+        for (int R = R0 / 2; R >= 1; R /= 2) {
+            const auto& f = levels.back();
+            std::vector<double> c(static_cast<std::size_t>(R) * static_cast<std::size_t>(R));
+            const std::size_t F = static_cast<std::size_t>(2 * R);
+            for (std::size_t y = 0; y < static_cast<std::size_t>(R); ++y)
+                for (std::size_t x = 0; x < static_cast<std::size_t>(R); ++x)
+                    c[x + static_cast<std::size_t>(R) * y] = 0.25 * (f[2 * x + F * 2 * y] + f[2 * x + 1 + F * 2 * y] + f[2 * x + F * (2 * y + 1)] + f[2 * x + 1 + F * (2 * y + 1)]);
+            levels.push_back(std::move(c));
+        }
+        m.mean_coverage_ = levels.back()[0];
+        m.levels_ = static_cast<int>(levels.size());
+        // Pack: the table, the header, the layers, the levels.
+        const auto pack = [&](auto& out, const auto& table_data, const auto& layers) {
+            using V = typename std::decay_t<decltype(out)>::value_type;
+            out = table_data;
+            out.push_back(V(layers.size(), d.period, texels_per_cell, m.levels_));
+            const std::uint32_t seed = layers[0].seed;
+            out.push_back(V(d.density, seed >> 16, seed & 0xffffu, R0));
+            for (const auto& l : layers) {
+                out.push_back(V(l.dir.x, l.dir.y, l.offset.x, l.offset.y));
+                out.push_back(V(l.inv_length, l.inv_width, 0, 0));
+            }
+            for (const auto& lv : levels) {
+                const std::size_t n = std::max<std::size_t>(1, lv.size() / 4), start = out.size();
+                out.resize(start + n, V(0));
+                for (std::size_t t = 0; t < lv.size(); ++t) out[start + (t >> 2)][static_cast<int>(t & 3)] = static_cast<typename V::value_type>(lv[t]);
+            }
+        };
+        pack(m.data_f_, table.data<float>(), m.layers_f_);
+        pack(m.data_d_, table.data<double>(), m.layers_d_);
+        m.table_bytes_ = table.memory_bytes();
+        return m;
+    }
+
+    template <class real>
+    const std::vector<glm::vec<4, real, glm::defaultp>>& data() const {
+        if constexpr (std::is_same<real, float>::value) return data_f_;
+        else return data_d_;
+    }
+    template <class real>
+    const std::vector<scratch_layer<real>>& layers() const {
+        if constexpr (std::is_same<real, float>::value) return layers_f_;
+        else return layers_d_;
+    }
+    int coverage_levels() const { return levels_; }
+    int coverage_resolution() const { return r0_; }
+    // The pattern's area fraction (the pyramid's top texel).
+    double mean_coverage() const { return mean_coverage_; }
+    std::size_t memory_bytes() const { return data_f_.size() * sizeof(glm::vec4); }
+    std::size_t table_bytes() const { return table_bytes_; }
+    std::size_t coverage_bytes() const { return memory_bytes() - table_bytes_ - 32 - 32 * layers_f_.size(); }
+
+    // Per-pixel access (the material must outlive the view).
+    template <class real>
+    struct view_t {
+        using K = detail::glsl::kernels<real>;
+        using v2 = vec2_t<real>;
+        using v3 = vec3_t<real>;
+        const glm::vec<4, real, glm::defaultp>* data = nullptr;
+        scratch_filter filter = scratch_filter::linear;
+        real cull = real(1e-6);  // layers whose area is below this are skipped (RGB16 Sec. 6.1)
+
+        scratch_table::view_t<real> table() const {
+            scratch_table::view_t<real> t;
+            t.data = data, t.filter = filter;
+            return t;
+        }
+        int layer_count() const { return K::glint_scratch_material_layer_count(data, 0); }
+        scratch_layer<real> layer(int k) const { return K::glint_scratch_material_layer(data, k); }
+        // Layer k's area under the footprint (x; axes a, b in surface units), Eq. 3.
+        real alpha(int k, const v2& x, const v2& a, const v2& b, const v2& jitter = v2(real(0.5))) const {
+            return K::glint_scratch_material_alpha(data, k, x, a, b, jitter);
+        }
+        // A point light (Eq. 4 with Eq. 6 per layer); frame f's u is the surface tangent.
+        scratch_lit<real> light(const scratch_frame<real>& f, const v2& x, const v2& a, const v2& b, const v3& wo, const v3& wl, real irradiance,
+                                real psi = real(0.017453292519943295769), int n = 4, const v2& jitter = v2(real(0.5))) const {
+            return K::glint_scratch_material_light(data, f, x, a, b, jitter, wo, wl, irradiance, psi, n, cull, static_cast<int>(filter));
+        }
+        // Importance sampling (layer -1: sample the base BRDF).
+        scratch_pick<real> sample(const scratch_frame<real>& f, const v2& x, const v2& a, const v2& b, const v3& wo, real u0, real u1, real u2,
+                                  const v2& jitter = v2(real(0.5))) const {
+            return K::glint_scratch_material_sample(data, f, x, a, b, jitter, wo, u0, u1, u2, cull, static_cast<int>(filter));
+        }
+    };
+    template <class real>
+    view_t<real> view() const {
+        view_t<real> v;
+        v.data = data<real>().data();
+        return v;
+    }
+
+private:
+    std::vector<glm::vec4> data_f_;
+    std::vector<glm::dvec4> data_d_;
+    std::vector<scratch_layer<float>> layers_f_;
+    std::vector<scratch_layer<double>> layers_d_;
+    int levels_ = 0, r0_ = 0;
+    double mean_coverage_ = 0;
+    std::size_t table_bytes_ = 0;
+};
+
+// Curved scratches: coordinates and tangent for concentric (pitch 0) or spiral turning marks
+// around centre c (kernels/scratch.glsl).
+template <class real>
+typename detail::glsl::kernels<real>::glint_scratch_param scratch_turned(const vec2_t<real>& p, const vec2_t<real>& c, real pitch = real(0)) {
+    return detail::glsl::kernels<real>::glint_scratch_turned(p, c, pitch);
 }
 
 }  // namespace glint

@@ -108,7 +108,7 @@ TEST_CASE("scratch kernels: GLSL against C++ (cone, Eq. 2, sampling, pdf, point 
            "    out0[w + 12u] = glint_scratch_light_reaches(f, wo, wl, " + bits(psi) + ") ? 1u : 0u;\n"
            "    glint_scratch_layer L; L.dir = vec2(" + bits(layer.dir.x) + ", " + bits(layer.dir.y) + "); L.offset = vec2(" + bits(layer.offset.x) + ", " +
            bits(layer.offset.y) + "); L.inv_length = " + bits(layer.inv_length) + "; L.inv_width = " + bits(layer.inv_width) + "; L.density = " + bits(layer.density) +
-           "; L.seed = " + std::to_string(layer.seed) + "u;\n"
+           "; L.seed = " + std::to_string(layer.seed) + "u; L.period = " + std::to_string(layer.period) + ";\n"
            "    vec2 x = vec2(in_float(b + 15u), in_float(b + 16u));\n"
            "    out0[w + 13u] = floatBitsToUint(glint_scratch_indicator(L, x));\n"
            "    out0[w + 14u] = floatBitsToUint(glint_scratch_alpha_footprint(L, x, vec2(0.02, 0.005), vec2(-0.004, 0.015), vec2(in_float(b + 13u), in_float(b + 14u))));\n"
@@ -179,4 +179,90 @@ TEST_CASE("scratch kernels: GLSL against C++ (cone, Eq. 2, sampling, pdf, point 
     CHECK(footprint.rate() <= SCRATCH_GLSL_MAX_FLIP_RATE);
     CHECK(static_cast<double>(valid_flip + reach_flip + indicator_flip) / n <= SCRATCH_GLSL_MAX_FLIP_RATE);
     CHECK(mixw.worst == 0);
+}
+
+TEST_CASE("scratch material: GLSL against C++ (pyramid footprint area, SV-BRDF point light, layer pick)") {
+    glint::scratch_table_options o;
+    o.resolution = 32, o.rays_per_row = 2000;
+    const auto table = glint::build_scratch_table(glint::make_v_groove(0.5), glint::scratch_fresnel::iron(), o);
+    glint::scratch_distribution d;
+    d.layers = 8, d.spread_deg = 360, d.length = 0.05, d.width = 0.004, d.density = 0.35, d.period = 32;
+    const auto m = glint::scratch_material::build(table, d);
+    const auto view = m.view<float>();
+    const std::size_t n = 5000;
+    std::vector<std::uint32_t> in;
+    struct input {
+        glm::vec3 wo, wl;
+        glm::vec2 x, a, b, jitter;
+        float u0;
+    };
+    std::vector<input> v(n);
+    for (std::uint32_t i = 0; i < n; ++i) {
+        input& q = v[i];
+        q.wo = unit(i, 21), q.wo.z = std::fabs(q.wo.z) + 0.1f, q.wo = glm::normalize(q.wo);
+        q.wl = unit(i, 23), q.wl.z = std::fabs(q.wl.z) + 0.1f, q.wl = glm::normalize(q.wl);
+        q.x = {rnd(i, 25), rnd(i, 26)};
+        const float size = std::exp2(-14 + 12 * rnd(i, 27)), r = 6.2831853f * rnd(i, 28);
+        q.a = size * glm::vec2(std::cos(r), std::sin(r)), q.b = 0.4f * size * glm::vec2(-std::sin(r), std::cos(r));
+        q.jitter = {rnd(i, 29), rnd(i, 30)};
+        q.u0 = rnd(i, 31);
+        glint_test::append_words(in, {q.wo.x, q.wo.y, q.wo.z, q.wl.x, q.wl.y, q.wl.z, q.x.x, q.x.y, q.a.x, q.a.y, q.b.x, q.b.y, q.jitter.x, q.jitter.y, q.u0});
+    }
+    const int outs = 5;
+    std::string src = glint_test::shader_header({"core.glsl"});
+    src += "layout(std430, binding = 0) readonly buffer In0 { uint in0[]; };\n"
+           "layout(std430, binding = 1) readonly buffer glint_scratch_buffer { vec4 glint_scratch_data[]; };\n"
+           "layout(std430, binding = 2) writeonly buffer Out { uint out0[]; };\n"
+           "#define GLINT_SCRATCH_BUFFER_DECLARED\n";
+    src += std::string(glint::glsl_source("scratch.glsl"));
+    src += "float in_float(uint k) { return uintBitsToFloat(in0[k]); }\n"
+           "vec2 in_vec2(uint k) { return vec2(in_float(k), in_float(k + 1u)); }\n"
+           "vec3 in_vec3(uint k) { return vec3(in_float(k), in_float(k + 1u), in_float(k + 2u)); }\n"
+           "void main() {\n"
+           "  for (uint i = gl_GlobalInvocationID.x; i < " + std::to_string(n) + "u; i += gl_NumWorkGroups.x * gl_WorkGroupSize.x) {\n"
+           "    uint b = 15u * i; uint w = " + std::to_string(outs) + "u * i;\n"
+           "    glint_scratch_frame f = glint_scratch_make_frame(vec3(0.0, 0.0, 1.0), vec3(1.0, 0.0, 0.0));\n"
+           "    vec2 x = in_vec2(b + 6u), a = in_vec2(b + 8u), bb = in_vec2(b + 10u), jit = in_vec2(b + 12u);\n"
+           "    out0[w] = floatBitsToUint(glint_scratch_material_alpha(3, x, a, bb, jit));\n"
+           "    glint_scratch_lit l = glint_scratch_material_light(f, x, a, bb, jit, in_vec3(b), in_vec3(b + 3u), 1.0, 0.05, 4, 1e-6, 1);\n"
+           "    out0[w + 1u] = floatBitsToUint(l.radiance.x); out0[w + 2u] = floatBitsToUint(l.base_weight);\n"
+           "    glint_scratch_pick p = glint_scratch_material_sample(f, x, a, bb, jit, in_vec3(b), in_float(b + 14u), 0.3, 0.6, 1e-6, 1);\n"
+           "    out0[w + 3u] = uint(p.layer + 1); out0[w + 4u] = floatBitsToUint(p.s.weight.x);\n"
+           "  }\n}\n";
+    const unsigned prog = glint_test::gl().program(src);
+    const auto gpu = glint_test::gl().run(prog, {in, glint_test::to_words(m.data<float>())}, n * outs, n);
+    const auto gf = [&](std::size_t i, int k) {
+        float x;
+        std::memcpy(&x, &gpu[i * outs + static_cast<std::size_t>(k)], 4);
+        return x;
+    };
+    const auto f = glint::make_scratch_frame<float>(glm::vec3(0, 0, 1), glm::vec3(1, 0, 0));
+    stats alpha, light, base, weight;
+    std::size_t pick_flip = 0, lit = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+        const input& q = v[i];
+        alpha.add(gf(i, 0), view.alpha(3, q.x, q.a, q.b, q.jitter), 1.0, 1e-5);
+        const auto l = view.light(f, q.x, q.a, q.b, q.wo, q.wl, 1.0f, 0.05f, 4, q.jitter);
+        lit += l.radiance.x > 0;
+        light.add(gf(i, 1), l.radiance.x, 1e-2, 1e-3), base.add(gf(i, 2), l.base_weight, 1.0, 1e-5);
+        const auto p = view.sample(f, q.x, q.a, q.b, q.wo, q.u0, 0.3f, 0.6f, q.jitter);
+        const bool same = gpu[i * outs + 3] == static_cast<std::uint32_t>(p.layer + 1);
+        pick_flip += !same;
+        if (same && p.layer >= 0) weight.add(gf(i, 4), p.s.weight.x, 1e-3, 1e-3);
+    }
+    const auto report = [&](const char* name, const stats& st) {
+        MESSAGE(std::string(name) << ": max difference " << st.worst << ", " << st.over << " of " << st.count << " beyond its threshold (rate " << st.rate() << ")");
+        CHECK(st.non_finite == 0u);
+    };
+    report("pyramid alpha (absolute)", alpha);
+    report("SV-BRDF point light", light);
+    report("base weight (absolute)", base);
+    report("picked layer's weight", weight);
+    MESSAGE("layer picks that differ: " << pick_flip << " of " << n << "; " << lit << " lit");
+    CHECK(lit > n / 20);
+    CHECK(alpha.rate() <= SCRATCH_GLSL_MAX_FLIP_RATE);
+    CHECK(light.rate() <= SCRATCH_GLSL_MAX_FLIP_RATE);
+    CHECK(base.rate() <= SCRATCH_GLSL_MAX_FLIP_RATE);
+    CHECK(weight.rate() <= SCRATCH_GLSL_MAX_FLIP_RATE);
+    CHECK(static_cast<double>(pick_flip) / n <= SCRATCH_GLSL_MAX_FLIP_RATE);
 }

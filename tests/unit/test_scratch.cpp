@@ -357,3 +357,71 @@ TEST_CASE("scratch kernels in float: no NaN or Inf at the hard inputs (horizon, 
     MESSAGE(n << " hard-case calls");
     CHECK(bad == 0u);
 }
+
+TEST_CASE("scratch material: no scratches is the base BRDF exactly; the culls change nothing measurable; bad input named") {
+    const auto t = small_table(glint::make_v_groove(30 * deg), glint::scratch_fresnel::iron(), 32, 2000);
+    glint::scratch_distribution d;
+    d.layers = 8, d.spread_deg = 360, d.length = 0.05, d.width = 0.002, d.density = 0, d.period = 16;
+    const auto none = glint::scratch_material::build(t, d);
+    CHECK(none.mean_coverage() == 0);
+    const auto v0 = none.view<float>();
+    const auto f = glint::make_scratch_frame<float>(glm::vec3(0, 0, 1), glm::vec3(1, 0, 0));
+    for (std::uint32_t k = 0; k < 500; ++k) {
+        glm::dvec3 wo = random_unit(k, 51), wl = random_unit(k, 53);
+        wo.z = std::fabs(wo.z), wl.z = std::fabs(wl.z);
+        const glm::vec2 x(static_cast<float>(rnd(k, 55)), static_cast<float>(rnd(k, 56)));
+        const glm::vec2 a(static_cast<float>(1e-3 * rnd(k, 57)), 0), b(0, static_cast<float>(1e-3 * rnd(k, 58)));
+        const auto lit = v0.light(f, x, a, b, glm::vec3(wo), glm::vec3(wl), 1.0f);
+        CHECK(lit.base_weight == 1.0f);
+        CHECK(lit.radiance.x == 0.0f);
+        CHECK(lit.layers_shaded == 0);
+        CHECK(v0.sample(f, x, a, b, glm::vec3(wo), static_cast<float>(rnd(k, 59)), 0.5f, 0.5f).layer == -1);
+    }
+    // With scratches: the area cull (1e-6) against none at all, over random pixels.
+    d.density = 0.3;
+    const auto m = glint::scratch_material::build(t, d);
+    auto with = m.view<double>(), without = m.view<double>();
+    without.cull = 0;
+    double worst = 0;
+    for (std::uint32_t k = 0; k < 2000; ++k) {
+        glm::dvec3 wo = random_unit(k, 61), wl = random_unit(k, 63);
+        wo.z = std::fabs(wo.z) + 0.05, wl.z = std::fabs(wl.z) + 0.05;
+        wo = glm::normalize(wo), wl = glm::normalize(wl);
+        const glm::dvec2 x(rnd(k, 65), rnd(k, 66)), a(3e-3 * rnd(k, 67), 0), b(0, 3e-3 * rnd(k, 68));
+        const auto f2 = glint::make_scratch_frame<double>(glm::dvec3(0, 0, 1), glm::dvec3(1, 0, 0));
+        const auto l1 = with.light(f2, x, a, b, wo, wl, 1.0, 5 * deg), l0 = without.light(f2, x, a, b, wo, wl, 1.0, 5 * deg);
+        worst = std::max(worst, std::fabs(l1.radiance.x - l0.radiance.x) / std::max(1e-300, std::fabs(l0.radiance.x)) * (l0.radiance.x > 0));
+        worst = std::max(worst, std::fabs(l1.base_weight - l0.base_weight));
+    }
+    MESSAGE("area cull: worst relative change " << worst);
+    CHECK(worst <= 1e-6);
+    using glint_test::contains;
+    using glint_test::error_of;
+    CHECK(contains(error_of([&] { glint::scratch_material::build(t, d, 3); }), "texels_per_cell = 3"));
+    d.period = 12;
+    CHECK(contains(error_of([&] { glint::scratch_material::build(t, d); }), "period = 12"));
+}
+
+TEST_CASE("scratch material: the coverage pyramid's top is the area fraction, and huge footprints read it") {
+    const auto t = small_table(glint::make_v_groove(30 * deg), glint::scratch_fresnel::mirror(), 16, 500);
+    glint::scratch_distribution d;
+    d.layers = 3, d.spread_deg = 90, d.length = 0.1, d.width = 0.01, d.density = 0.35, d.period = 32;
+    const auto m = glint::scratch_material::build(t, d, 4);
+    CHECK(m.coverage_levels() == 8);  // 32 cells x 4 texels = 128 = 2^7
+    // The area fraction by the exact indicator at 1e6 points of one period (noise coordinates).
+    const auto& L = m.layers<double>()[0];
+    double in = 0;
+    const int n = 1000;
+    for (int j = 0; j < n; ++j)
+        for (int i = 0; i < n; ++i)
+            in += K<double>::glint_worley_f1(glm::dvec2((i + 0.5) * d.period / n, (j + 0.5) * d.period / n), L.seed, L.period) <= d.density;
+    const double fraction = in / (static_cast<double>(n) * n);
+    MESSAGE("area fraction " << fraction << ", pyramid top " << m.mean_coverage());
+    CHECK(std::fabs(m.mean_coverage() - fraction) < 2e-3);
+    // A footprint of many periods reads the top levels: each layer's alpha is the fraction.
+    const auto v = m.view<double>();
+    for (int k = 0; k < 3; ++k) {
+        const double a = v.alpha(k, glm::dvec2(0.3, 0.4), glm::dvec2(50, 0), glm::dvec2(0, 50));
+        CHECK(a == doctest::Approx(m.mean_coverage()).epsilon(1e-9));
+    }
+}

@@ -329,7 +329,9 @@ GLINT_FN glint_scratch_mix glint_scratch_mix_weights(real alpha_sum) {
 
 // One layer of a scratch distribution (RGB16 Eq. 7): orientation dir = (cos Theta_k, sin Theta_k)
 // in the surface's (tangent, bitangent) plane, mean scratch length and width (1 / inv_length,
-// 1 / inv_width, in the units of x), Worley threshold density d in [0, 1], offset xi_k, hash seed.
+// 1 / inv_width, in the units of x), Worley threshold density d in [0, 1], offset xi_k, and the
+// shared noise pattern: hash seed and period (cells, a power of two; the pattern repeats so that a
+// baked coverage pyramid can hold it).
 struct glint_scratch_layer {
     vec2 dir;
     vec2 offset;
@@ -337,6 +339,7 @@ struct glint_scratch_layer {
     real inv_width;
     real density;
     uint seed;
+    int period;
 };
 
 // The layer's noise coordinates: rotate into the layer's axes, then stretch (Eq. 7 read as
@@ -346,15 +349,23 @@ GLINT_FN vec2 glint_scratch_layer_point(glint_scratch_layer L, vec2 x) {
     return vec2(dot(L.dir, x) * L.inv_length, (L.dir.x * x.y - L.dir.y * x.x) * L.inv_width) + L.offset;
 }
 
+// The layer's footprint axis vector a (in x) in noise coordinates (the linear part of
+// glint_scratch_layer_point).
+GLINT_FN vec2 glint_scratch_layer_axis(glint_scratch_layer L, vec2 a) {
+    return vec2(dot(L.dir, a) * L.inv_length, (L.dir.x * a.y - L.dir.y * a.x) * L.inv_width);
+}
+
 // Worley's F1 (distance to the nearest feature point), one feature point per unit cell placed by
-// glint_pcg3d of the cell and the seed, over the 3 x 3 cells around p.
-GLINT_FN real glint_worley_f1(vec2 p, uint seed) {
+// glint_pcg3d of the cell (modulo the period, a power of two) and the seed, over the 3 x 3 cells
+// around p.
+GLINT_FN real glint_worley_f1(vec2 p, uint seed, int period) {
     vec2 c = clamp(floor(p), vec2(real(-1073741824)), vec2(real(1073741824)));  // +-2^30: int stays in range
+    uint mask = uint(max(period, 1) - 1);
     real best = real(8);
     for (int dy = -1; dy <= 1; ++dy) {
         for (int dx = -1; dx <= 1; ++dx) {
             vec2 cell = c + vec2(real(dx), real(dy));
-            uvec3 h = glint_pcg3d(uvec3(uint(int(cell.x)), uint(int(cell.y)), seed));
+            uvec3 h = glint_pcg3d(uvec3(uint(int(cell.x)) & mask, uint(int(cell.y)) & mask, seed));
             vec2 q = cell + vec2(glint_unit_from_bits(h.x), glint_unit_from_bits(h.y)) - p;
             best = min(best, dot(q, q));
         }
@@ -365,14 +376,13 @@ GLINT_FN real glint_worley_f1(vec2 p, uint seed) {
 // Eq. 7: 1 where the layer has a scratch at x (F1 <= density), else 0. Each scratch is an ellipse
 // 2 d / inv_length long and 2 d / inv_width wide around a feature point.
 GLINT_FN real glint_scratch_indicator(glint_scratch_layer L, vec2 x) {
-    return (glint_worley_f1(glint_scratch_layer_point(L, x), L.seed) <= L.density) ? real(1) : real(0);
+    return (glint_worley_f1(glint_scratch_layer_point(L, x), L.seed, L.period) <= L.density) ? real(1) : real(0);
 }
 
 // Eq. 3 with its 1/|P| (RGB16 omits it): the layer's relative area under a Gaussian footprint of
-// centre x and covariance sigma^2 (a a^T + b b^T) (a, b the footprint's axis vectors, e.g.
-// sigma_pix * duvdx and sigma_pix * duvdy), estimated from a 4 x 4 grid of the normal's quantiles
-// at (i + jitter) / 4 per axis: unbiased over a uniform jitter in [0, 1)^2 (each point then has the
-// footprint's density).
+// centre x and covariance a a^T + b b^T (a, b the footprint's axis vectors, e.g. sigma_pix * duvdx
+// and sigma_pix * duvdy), estimated from a 4 x 4 grid of the normal's quantiles at (i + jitter) / 4
+// per axis: unbiased over a uniform jitter in [0, 1)^2 (each point then has the footprint's density).
 GLINT_FN real glint_scratch_alpha_footprint(glint_scratch_layer L, vec2 x, vec2 a, vec2 b, vec2 jitter) {
     real sum = real(0);
     for (int j = 0; j < 4; ++j) {
@@ -386,3 +396,220 @@ GLINT_FN real glint_scratch_alpha_footprint(glint_scratch_layer L, vec2 x, vec2 
     }
     return sum * real(0.0625);
 }
+
+// Curved scratches (RGB16 Fig. 15: the parametrization carries them): coordinates in which
+// concentric circles (pitch 0) or an Archimedean spiral of the given pitch around centre c become
+// straight lines along the first axis, and the surface tangent along them (lathe-turned metal).
+// The first coordinate is arc length at radius r, the second the distance across the turns.
+struct glint_scratch_param {
+    vec2 x;
+    vec2 tangent;
+};
+
+GLINT_FN glint_scratch_param glint_scratch_turned(vec2 p, vec2 c, real pitch) {
+    glint_scratch_param r;
+    vec2 d = p - c;
+    real rad = length(d);
+    real ang = glint_atan2(d.y, d.x);
+    r.x = vec2(rad * ang, rad - pitch * ang * GLINT_INV_TWO_PI);
+    r.tangent = (rad > real(0)) ? vec2(-d.y, d.x) / rad : vec2(real(1), real(0));
+    return r;
+}
+
+#if defined(GLINT_SCRATCH_FETCH)
+
+// A scratch material: the table, then (at index 1 + M + 2 M^2) its layers and the baked coverage
+// pyramid of the shared noise pattern (include/glint/scratch.hpp, scratch_material):
+//   [h]       (K layers, period P cells, T texels per cell at level 0, pyramid levels)
+//   [h + 1]   (density, seed >> 16, seed & 0xffff, R0 = P T)
+//   [h + 2 + 2k], [h + 3 + 2k]   layer k: (dir, offset), (inv_length, inv_width, 0, 0)
+//   [h + 2 + 2K ...]             level l (R_l = R0 / 2^l texels a side, l = 0 .. levels - 1):
+//                                max(1, R_l^2 / 4) vec4, texel (x, y) at component (x + R_l y) of them;
+//                                each texel the fraction of its square of noise space inside a scratch.
+GLINT_FN int glint_scratch_material_header(int M) {
+    return 1 + M + 2 * M * M;
+}
+
+GLINT_FN int glint_scratch_material_layer_count(GLINT_SCRATCH_DATA_PARAM int unused) {
+    int M = int(GLINT_SCRATCH_FETCH(0).x);
+    return int(GLINT_SCRATCH_FETCH(glint_scratch_material_header(M)).x) + 0 * unused;
+}
+
+GLINT_FN glint_scratch_layer glint_scratch_material_layer(GLINT_SCRATCH_DATA_PARAM int k) {
+    int h = glint_scratch_material_header(int(GLINT_SCRATCH_FETCH(0).x));
+    vec4 head = GLINT_SCRATCH_FETCH(h), head2 = GLINT_SCRATCH_FETCH(h + 1);
+    vec4 a = GLINT_SCRATCH_FETCH(h + 2 + 2 * k), b = GLINT_SCRATCH_FETCH(h + 3 + 2 * k);
+    glint_scratch_layer L;
+    L.dir = vec2(a.x, a.y);
+    L.offset = vec2(a.z, a.w);
+    L.inv_length = b.x;
+    L.inv_width = b.y;
+    L.density = head2.x;
+    L.seed = (uint(head2.y) << 16u) | uint(head2.z);
+    L.period = int(head.y);
+    return L;
+}
+
+// Coverage texel (x, y) of the level starting at vec4 index base, R texels a side, periodic.
+GLINT_FN real glint_scratch_coverage_texel(GLINT_SCRATCH_DATA_PARAM int base, int R, int x, int y) {
+    int t = (x & (R - 1)) + R * (y & (R - 1));
+    return GLINT_SCRATCH_FETCH(base + (t >> 2))[t & 3];
+}
+
+// Bilinear read of a level at noise point p (texel centres at (i + 1/2) / T_l cells).
+GLINT_FN real glint_scratch_coverage_bilinear(GLINT_SCRATCH_DATA_PARAM int base, int R, real texels_per_cell, vec2 p) {
+    vec2 q = p * texels_per_cell - vec2(real(0.5));
+    vec2 f = floor(q);
+    vec2 w = q - f;
+    // Reduce modulo R before converting (p may be far from the origin).
+    vec2 m = f - real(R) * floor(f / real(R));
+    int x = int(m.x), y = int(m.y);
+    real c00 = glint_scratch_coverage_texel(GLINT_SCRATCH_DATA_ARG base, R, x, y), c10 = glint_scratch_coverage_texel(GLINT_SCRATCH_DATA_ARG base, R, x + 1, y);
+    real c01 = glint_scratch_coverage_texel(GLINT_SCRATCH_DATA_ARG base, R, x, y + 1), c11 = glint_scratch_coverage_texel(GLINT_SCRATCH_DATA_ARG base, R, x + 1, y + 1);
+    return mix(mix(c00, c10, w.x), mix(c01, c11, w.x), w.y);
+}
+
+// Layer k's relative area under the Gaussian footprint (x; axes a, b in x) from the coverage
+// pyramid, as GPUs filter anisotropically: the footprint's axes in noise space give its sd along
+// the major (s1) and minor (s2) directions; up to 16 taps at the major axis's normal quantiles,
+// each a trilinear read at the level whose texel is 2 max(s2, s1 / 16) wide. The box and tent
+// filters stand in for the Gaussian (error measured in docs/scratch.md). Footprints below half a
+// level-0 texel use the exact indicator through glint_scratch_alpha_footprint with the jitter.
+GLINT_FN real glint_scratch_material_alpha(GLINT_SCRATCH_DATA_PARAM int k, vec2 x, vec2 a, vec2 b, vec2 jitter) {
+    int h = glint_scratch_material_header(int(GLINT_SCRATCH_FETCH(0).x));
+    vec4 head = GLINT_SCRATCH_FETCH(h);
+    int K = int(head.x), T = int(head.z), levels = int(head.w);
+    int R0 = int(GLINT_SCRATCH_FETCH(h + 1).w);
+    glint_scratch_layer L = glint_scratch_material_layer(GLINT_SCRATCH_DATA_ARG k);
+    vec2 ap = glint_scratch_layer_axis(L, a), bp = glint_scratch_layer_axis(L, b);
+    // The footprint covariance in noise space and its eigen-decomposition.
+    real sxx = ap.x * ap.x + bp.x * bp.x, syy = ap.y * ap.y + bp.y * bp.y, sxy = ap.x * ap.y + bp.x * bp.y;
+    real half_tr = real(0.5) * (sxx + syy), root = sqrt(max(real(0.25) * (sxx - syy) * (sxx - syy) + sxy * sxy, real(0)));
+    real s1 = sqrt(max(half_tr + root, real(0))), s2 = sqrt(max(half_tr - root, real(0)));
+    if (s1 * real(T) < real(0.5)) return glint_scratch_alpha_footprint(L, x, a, b, jitter);
+    // The major axis: of the two forms of the eigenvector, the longer (better conditioned).
+    vec2 e1 = vec2(s1 * s1 - syy, sxy), e2 = vec2(sxy, s1 * s1 - sxx);
+    vec2 e = (dot(e1, e1) >= dot(e2, e2)) ? e1 : e2;
+    real le = length(e);
+    e = (le > real(0)) ? e / le : vec2(real(1), real(0));
+    real s2e = max(s2, s1 / real(16));
+    int taps = int(clamp(ceil(s1 / s2e), real(1), real(16)));
+    real lod = clamp(log2(max(real(2) * s2e * real(T), real(1e-30))), real(0), real(levels - 1));
+    int l0 = int(floor(lod));
+    int l1 = min(l0 + 1, levels - 1);
+    real fl = lod - real(l0);
+    // Level starts.
+    int base = h + 2 + 2 * K, b0 = base, b1 = base;
+    for (int l = 0; l < 24; ++l) {
+        if (l >= l1) break;
+        int R = R0 >> l;
+        int size = max(1, (R * R) >> 2);
+        if (l < l0) b0 += size;
+        b1 += size;
+    }
+    int R_0 = R0 >> l0, R_1 = R0 >> l1;
+    real t0 = real(T) / real(1 << l0), t1 = real(T) / real(1 << l1);
+    vec2 p = glint_scratch_layer_point(L, x);
+    real sum = real(0);
+    for (int j = 0; j < 16; ++j) {
+        if (j >= taps) break;
+        real z = (taps > 1) ? glint_normal_quantile((real(j) + real(0.5)) / real(taps)) : real(0);
+        vec2 q = p + (z * s1) * e;
+        sum += mix(glint_scratch_coverage_bilinear(GLINT_SCRATCH_DATA_ARG b0, R_0, t0, q), glint_scratch_coverage_bilinear(GLINT_SCRATCH_DATA_ARG b1, R_1, t1, q), fl);
+    }
+    return sum / real(taps);
+}
+
+// One point light on the whole SV-BRDF (RGB16 Eq. 4 with Eq. 6 per layer) at x, with frame f (n and
+// the surface tangent the layers rotate from), footprint axes a, b: every layer's area first (Eq. 4
+// needs their sum), then, for each layer with area >= cull and whose cone the light can reach, its
+// radiance. Returns the scratches' radiance (weighted) and the base BRDF's weight: the caller adds
+// base_weight * f_base(wi = wl, wo) * E * cos.
+struct glint_scratch_lit {
+    vec3 radiance;
+    real base_weight;
+    real alpha_sum;
+    int layers_shaded;
+};
+
+GLINT_FN glint_scratch_frame glint_scratch_layer_frame(glint_scratch_frame f, glint_scratch_layer L) {
+    glint_scratch_frame g;
+    g.n = f.n;
+    g.u = L.dir.x * f.u + L.dir.y * f.v;
+    g.v = cross(f.n, g.u);
+    return g;
+}
+
+GLINT_FN glint_scratch_lit glint_scratch_material_light(GLINT_SCRATCH_DATA_PARAM glint_scratch_frame f, vec2 x, vec2 a, vec2 b, vec2 jitter, vec3 wo, vec3 wl,
+                                                        real irradiance, real psi, int n, real cull, int filter_mode) {
+    glint_scratch_lit r;
+    r.radiance = vec3(real(0));
+    r.layers_shaded = 0;
+    int K = min(glint_scratch_material_layer_count(GLINT_SCRATCH_DATA_ARG 0), GLINT_SCRATCH_MAX_LAYERS);
+    real alpha[64];
+    real sum = real(0);
+    for (int k = 0; k < GLINT_SCRATCH_MAX_LAYERS; ++k) {
+        if (k >= K) break;
+        real al = glint_scratch_material_alpha(GLINT_SCRATCH_DATA_ARG k, x, a, b, jitter);
+        alpha[k] = (al >= cull) ? al : real(0);
+        sum += alpha[k];
+    }
+    glint_scratch_mix m = glint_scratch_mix_weights(sum);
+    r.base_weight = m.base_weight;
+    r.alpha_sum = sum;
+    for (int k = 0; k < GLINT_SCRATCH_MAX_LAYERS; ++k) {
+        if (k >= K) break;
+        if (!(alpha[k] > real(0))) continue;
+        glint_scratch_frame g = glint_scratch_layer_frame(f, glint_scratch_material_layer(GLINT_SCRATCH_DATA_ARG k));
+        if (!glint_scratch_light_reaches(g, wo, wl, psi)) continue;
+        r.radiance += (alpha[k] * m.layer_scale) * glint_scratch_light_radiance(GLINT_SCRATCH_DATA_ARG g, wo, wl, irradiance, psi, n, jitter.x, filter_mode);
+        r.layers_shaded += 1;
+    }
+    return r;
+}
+
+// Importance sampling of the whole SV-BRDF (RGB16 Sec. 5.1, Fig. 11: layers by their weights):
+// with u0 picks the base (layer = -1: the caller samples its base BRDF and weighs it as usual) or
+// layer k with probability w_k, then samples that layer's cone with u1, u2. The sample's weight
+// already carries rho_s cos / pdf; the pick's probability cancels Eq. 4's weight, so the estimator
+// is weight * L_i(wi) either way (for the base: f_base cos / pdf_base * L_i).
+struct glint_scratch_pick {
+    glint_scratch_sample s;
+    int layer;
+};
+
+GLINT_FN glint_scratch_pick glint_scratch_material_sample(GLINT_SCRATCH_DATA_PARAM glint_scratch_frame f, vec2 x, vec2 a, vec2 b, vec2 jitter, vec3 wo, real u0,
+                                                          real u1, real u2, real cull, int filter_mode) {
+    glint_scratch_pick r;
+    r.layer = -1;
+    r.s.wi = f.n;
+    r.s.weight = vec3(real(0));
+    r.s.phi_i = real(0);
+    r.s.pdf_phi = real(0);
+    r.s.valid = false;
+    int K = min(glint_scratch_material_layer_count(GLINT_SCRATCH_DATA_ARG 0), GLINT_SCRATCH_MAX_LAYERS);
+    real alpha[64];
+    real sum = real(0);
+    for (int k = 0; k < GLINT_SCRATCH_MAX_LAYERS; ++k) {
+        if (k >= K) break;
+        real al = glint_scratch_material_alpha(GLINT_SCRATCH_DATA_ARG k, x, a, b, jitter);
+        alpha[k] = (al >= cull) ? al : real(0);
+        sum += alpha[k];
+    }
+    glint_scratch_mix m = glint_scratch_mix_weights(sum);
+    real t = clamp(u0, real(0), real(1)) - m.base_weight;
+    if (t < real(0)) return r;
+    for (int k = 0; k < GLINT_SCRATCH_MAX_LAYERS; ++k) {
+        if (k >= K) break;
+        real w = alpha[k] * m.layer_scale;
+        if (w > real(0) && (t < w || k == K - 1)) {
+            r.layer = k;
+            r.s = glint_scratch_sample_cone(GLINT_SCRATCH_DATA_ARG glint_scratch_layer_frame(f, glint_scratch_material_layer(GLINT_SCRATCH_DATA_ARG k)), wo, u1, u2, filter_mode);
+            return r;
+        }
+        t -= w;
+    }
+    return r;
+}
+
+#endif  // GLINT_SCRATCH_FETCH

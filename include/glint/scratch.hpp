@@ -751,7 +751,7 @@ scratch_table::view_t<real> scratch_table::view() const {
 // uniform over the whole period (RGB16 draws it in [-1, 1]^2, which leaves layers of similar angle
 // copies of each other within a cell: ours).
 struct scratch_distribution {
-    int layers = 6;            // [1, 64]
+    int layers = 6;            // [0, 64]; 0: no scratches (the material is its base BRDF)
     double spread_deg = 5;     // Theta: [0, 360]
     double main_deg = 0;
     double length = 0.1;       // l > 0
@@ -761,11 +761,16 @@ struct scratch_distribution {
     std::uint32_t seed = 0;
 };
 
+namespace detail {
+// The hash seed of a distribution's shared noise pattern.
+inline std::uint32_t scratch_pattern_seed(std::uint32_t seed) { return pcg3d(glm::uvec3(seed, 0x9e3779b9u, 0x5c4a7c11u)).x; }
+}  // namespace detail
+
 // The layers of a distribution for glint_scratch_indicator / glint_scratch_alpha_footprint.
 template <class real>
 std::vector<scratch_layer<real>> make_scratch_layers(const scratch_distribution& d) {
     const std::string what = "glint::make_scratch_layers: ";
-    if (d.layers < 1 || d.layers > 64) throw error(what + "layers = " + std::to_string(d.layers) + " is outside [1, 64]");
+    if (d.layers < 0 || d.layers > 64) throw error(what + "layers = " + std::to_string(d.layers) + " is outside [0, 64]");
     if (!(d.spread_deg >= 0 && d.spread_deg <= 360)) throw error(what + "spread_deg = " + detail::scratch_number(d.spread_deg) + " is outside [0, 360]");
     if (!std::isfinite(d.main_deg)) throw error(what + "main_deg is not finite");
     if (!(d.length > 0 && std::isfinite(d.length))) throw error(what + "length = " + detail::scratch_number(d.length) + " is not positive");
@@ -775,7 +780,7 @@ std::vector<scratch_layer<real>> make_scratch_layers(const scratch_distribution&
         throw error(what + "period = " + std::to_string(d.period) + " is not a power of two in [1, 4096]");
     std::vector<scratch_layer<real>> out;
     const double deg = 0.017453292519943295769;  // pi / 180, 20 digits
-    const std::uint32_t seed = pcg3d(glm::uvec3(d.seed, 0x9e3779b9u, 0x5c4a7c11u)).x;
+    const std::uint32_t seed = detail::scratch_pattern_seed(d.seed);
     for (int k = 0; k < d.layers; ++k) {
         const glm::uvec3 h = pcg3d(glm::uvec3(static_cast<unsigned>(k), d.seed, 0x5c4a7c11u));
         const double theta = (d.main_deg + (detail::scratch_unit(h.x) - 0.5) * d.spread_deg) * deg;
@@ -825,11 +830,11 @@ public:
         scratch_material m;
         m.layers_d_ = make_scratch_layers<double>(d);
         m.layers_f_ = make_scratch_layers<float>(d);
-        const int R0 = d.period * texels_per_cell;
+        const int R0 = m.layers_d_.empty() ? 1 : d.period * texels_per_cell;
         m.r0_ = R0;
         // Level 0.
         std::vector<std::vector<double>> levels(1, std::vector<double>(static_cast<std::size_t>(R0) * static_cast<std::size_t>(R0)));
-        const auto& L = m.layers_d_[0];
+        const std::uint32_t seed = detail::scratch_pattern_seed(d.seed);
         using KD = detail::glsl::kernels<double>;
         const double tpc = texels_per_cell, half_diag = 0.70710678118654752440 / tpc;  // sqrt(1/2), 20 digits
         std::atomic<int> next{0};
@@ -837,7 +842,7 @@ public:
             for (int y; (y = next.fetch_add(1)) < R0;)
                 for (int x = 0; x < R0; ++x) {
                     const glm::dvec2 c((x + 0.5) / tpc, (y + 0.5) / tpc);
-                    const double f1 = KD::glint_worley_f1(c, L.seed, L.period);
+                    const double f1 = KD::glint_worley_f1(c, seed, d.period);
                     double v;
                     if (f1 - d.density > half_diag) v = 0;
                     else if (d.density - f1 > half_diag) v = 1;
@@ -845,17 +850,19 @@ public:
                         int in = 0;
                         for (int j = 0; j < 4; ++j)
                             for (int i = 0; i < 4; ++i)
-                                in += KD::glint_worley_f1(glm::dvec2((x + (i + 0.5) / 4) / tpc, (y + (j + 0.5) / 4) / tpc), L.seed, L.period) <= d.density;
+                                in += KD::glint_worley_f1(glm::dvec2((x + (i + 0.5) / 4) / tpc, (y + (j + 0.5) / 4) / tpc), seed, d.period) <= d.density;
                         v = in / 16.0;
                     }
                     levels[0][static_cast<std::size_t>(x) + static_cast<std::size_t>(R0) * static_cast<std::size_t>(y)] = v;
                 }
         };
-        const int threads = std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
-        std::vector<std::thread> pool;
-        for (int k = 1; k < threads; ++k) pool.emplace_back(work);
-        work();
-        for (auto& th : pool) th.join();
+        if (!m.layers_d_.empty()) {
+            const int threads = std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+            std::vector<std::thread> pool;
+            for (int k = 1; k < threads; ++k) pool.emplace_back(work);
+            work();
+            for (auto& th : pool) th.join();
+        }
         for (int R = R0 / 2; R >= 1; R /= 2) {
             const auto& f = levels.back();
             std::vector<double> c(static_cast<std::size_t>(R) * static_cast<std::size_t>(R));
@@ -872,7 +879,6 @@ public:
             using V = typename std::decay_t<decltype(out)>::value_type;
             out = table_data;
             out.push_back(V(layers.size(), d.period, texels_per_cell, m.levels_));
-            const std::uint32_t seed = layers[0].seed;
             out.push_back(V(d.density, seed >> 16, seed & 0xffffu, R0));
             for (const auto& l : layers) {
                 out.push_back(V(l.dir.x, l.dir.y, l.offset.x, l.offset.y));

@@ -23,6 +23,8 @@
 #include <glint/scratch.hpp>
 #include <glint/testing/stats.hpp>
 
+#include "../support/scratch_support.hpp"
+
 namespace {
 
 template <class real>
@@ -61,50 +63,6 @@ struct two_sample {
         r.statistic = stat, r.degrees_of_freedom = cells, r.cells = static_cast<std::size_t>(cells);
         r.p_value = cells > 0 ? gt::chi_square_survival(stat, cells) : 1;
         return r;
-    }
-};
-
-// The test's own tracer: the profile extruded along u = X, the cross-section in (Y = v, Z = n); a
-// 3D ray is tested against every segment's plane (no hierarchy), reflected in 3D, and attenuated
-// by Fresnel at the 3D cosine; non-periodic profiles only.
-struct tracer3d {
-    const glint::scratch_profile& p;
-    glint::scratch_fresnel fresnel;
-    struct result {
-        glm::dvec3 d;
-        glm::dvec3 f;
-        bool ok;
-    };
-    result trace(double y0, glm::dvec3 d) const {
-        glm::dvec3 o(0, y0, 0);
-        glm::dvec3 f(1);
-        int last = -1;
-        for (int bounce = 0; bounce < 64; ++bounce) {
-            double best = 1e300;
-            int hit = -1;
-            for (std::size_t k = 0; k + 1 < p.x.size(); ++k) {
-                if (static_cast<int>(k) == last) continue;
-                const double dy = p.x[k + 1] - p.x[k], dz = p.h[k + 1] - p.h[k], l = std::hypot(dy, dz);
-                const glm::dvec3 m(0, -dz / l, dy / l);
-                const double dn = glm::dot(d, m);
-                if (!(dn < 0)) continue;
-                const double t = glm::dot(glm::dvec3(0, p.x[k], p.h[k]) - o, m) / dn;
-                if (!(t > 0) || t >= best) continue;
-                const double y = o.y + t * d.y;
-                if (y < p.x[k] - 1e-12 || y > p.x[k + 1] + 1e-12) continue;
-                best = t, hit = static_cast<int>(k);
-            }
-            if (hit < 0) return {d, f, d.z > 0};
-            const std::size_t hk = static_cast<std::size_t>(hit);
-            const double dy = p.x[hk + 1] - p.x[hk], dz = p.h[hk + 1] - p.h[hk], l = std::hypot(dy, dz);
-            const glm::dvec3 m(0, -dz / l, dy / l);
-            const double c = -glm::dot(d, m);
-            f *= fresnel(c);
-            o += best * d;
-            d = glm::normalize(d + 2 * c * m);
-            last = hit;
-        }
-        return {d, f, false};
     }
 };
 
@@ -220,28 +178,14 @@ TEST_CASE("scratch table against an independent 3D tracer: theta_o = -theta_i, s
     for (const auto& md : models) {
         const auto raw = table(profile, md.f, M, N, false, 11);
         const auto sym = table(profile, md.f, M, N, true, 11);
-        auto nearest = sym.view<double>();
-        nearest.filter = glint::scratch_filter::nearest;
-        const tracer3d tr{profile, md.f};
         const double thetas[] = {0, 60, 15, 30, 45, 75};
         std::string row_text;
         for (double th_deg : thetas) {
             const double th = th_deg * deg;
-            // The tracer's table at this theta: rho[o][i] from rays entering at theta_i = -theta.
-            std::vector<double> sum(static_cast<std::size_t>(M * M), 0.0), sum2(static_cast<std::size_t>(M * M), 0.0);
-            for (int i = 0; i < M; ++i) {
-                const double s0 = std::sin(-pi / 2 + i * pi / M), s1 = std::sin(-pi / 2 + (i + 1) * pi / M);
-                for (int r = 0; r < N; ++r) {
-                    const double s = s0 + rnd(static_cast<std::uint32_t>(r), static_cast<std::uint32_t>(i), 91) * (s1 - s0), c = std::sqrt(1 - s * s);
-                    const glm::dvec3 wi(std::sin(-th), std::cos(th) * s, std::cos(th) * c);
-                    const auto e = tr.trace(-0.5 + (r + rnd(static_cast<std::uint32_t>(r), static_cast<std::uint32_t>(i), 92)) / N, -wi);
-                    if (!e.ok) continue;
-                    worst_theta = std::max(worst_theta, std::fabs(std::asin(e.d.x) - th));
-                    const int o = K<double>::glint_scratch_bin(std::atan2(e.d.y, e.d.z), M);
-                    const double w = e.f.x / (N * glint::scratch_table::bin_ds(o, M));
-                    sum[static_cast<std::size_t>(o * M + i)] += w, sum2[static_cast<std::size_t>(o * M + i)] += w * w;
-                }
-            }
+            const auto traced = glint_test::trace_table(profile, md.f, M, N, th);
+            const auto& sum = traced.sum;
+            const auto& sum2 = traced.sum2;
+            worst_theta = std::max(worst_theta, traced.worst_theta);
             if (th_deg == 0 || th_deg == 60) {
                 two_sample ts;
                 ts.resize(static_cast<std::size_t>(M * M));
@@ -269,18 +213,10 @@ TEST_CASE("scratch table against an independent 3D tracer: theta_o = -theta_i, s
                 }
             }
             // Eq. 2's relative L1 error over the table (mass-weighted) at this theta.
-            double num = 0, den = 0;
-            for (int o = 0; o < M; ++o)
-                for (int i = 0; i < M; ++i) {
-                    const std::size_t b = static_cast<std::size_t>(o * M + i);
-                    const double w = glint::scratch_table::bin_ds(o, M) * glint::scratch_table::bin_ds(i, M);
-                    const double ref = 0.5 * (sum[b] + sum[static_cast<std::size_t>(i * M + o)]);  // symmetrised as the table
-                    const double pred = nearest.rho(th, -pi / 2 + (o + 0.5) * pi / M, -pi / 2 + (i + 0.5) * pi / M).x;
-                    num += std::fabs(pred - ref) * w, den += ref * w;
-                }
-            row_text += " " + std::to_string(static_cast<int>(th_deg)) + ": " + std::to_string(num / den);
+            const double err = glint_test::eq2_error(sym, traced, th);
+            row_text += " " + std::to_string(static_cast<int>(th_deg)) + ": " + std::to_string(err);
             // theta = 0 and pi/3 show the noise floor (Eq. 2 is exact there).
-            CHECK(num / den < 0.25);
+            CHECK(err < 0.25);
         }
         MESSAGE(std::string(md.name) << ", Eq. 2 relative L1 error vs the 3D tracer by theta (deg):" << row_text);
     }

@@ -425,3 +425,34 @@ TEST_CASE("scratch material: the coverage pyramid's top is the area fraction, an
         CHECK(a == doctest::Approx(m.mean_coverage()).epsilon(1e-9));
     }
 }
+
+TEST_CASE("scratch material: the coarse areas of unlit layers move Eq. 4's base weight by little") {
+    // 32 layers of the scratched pattern; 2000 random pixels with footprints of 1e-4 to 1e-2: the
+    // base weight from glint_scratch_material_light (coarse areas for the layers the light cannot
+    // reach) against Eq. 4 from every layer's full area. Measured: mean 0.0105, worst 0.20 (at the
+    // smallest footprints, where the full area is the exact indicator's 16-point estimate, in
+    // steps of 1/16); base weights about 0.75. Leaving the unlit layers out of the sum would move
+    // it by their whole area, about 0.25 on average.
+    const auto t = small_table(glint::make_v_groove(30 * deg), glint::scratch_fresnel::iron(), 32, 1000);
+    glint::scratch_distribution d;
+    d.layers = 32, d.spread_deg = 360, d.length = 0.1, d.width = 2e-4, d.density = 0.05;
+    const auto m = glint::scratch_material::build(t, d);
+    const auto v = m.view<double>();
+    const auto f = glint::make_scratch_frame<double>(glm::dvec3(0, 0, 1), glm::dvec3(1, 0, 0));
+    double worst = 0, mean = 0;
+    const int n = 2000;
+    for (std::uint32_t k = 0; k < n; ++k) {
+        const glm::dvec2 x(rnd(k, 71), rnd(k, 72));
+        const double s = std::pow(10.0, -4 + 2 * rnd(k, 73));
+        const glm::dvec2 a(s, 0), b(0, 0.6 * s);
+        const glm::dvec3 wo = glm::normalize(glm::dvec3(0.3, 0.1, 1)), wl = glm::normalize(glm::dvec3(-0.4, 0.2, 1));
+        double sum = 0;
+        for (int j = 0; j < 32; ++j) sum += v.alpha(j, x, a, b);
+        const double full = glint::scratch_mix_weights<double>(sum).base_weight;
+        const double e = std::fabs(v.light(f, x, a, b, wo, wl, 1.0).base_weight - full);
+        worst = std::max(worst, e), mean += e / n;
+    }
+    MESSAGE("base weight: mean difference " << mean << ", worst " << worst);
+    CHECK(mean < 0.02);
+    CHECK(worst < 0.3);
+}

@@ -457,73 +457,108 @@ GLINT_FN real glint_scratch_coverage_texel(GLINT_SCRATCH_DATA_PARAM int base, in
 }
 
 // Bilinear read of a level at noise point p (texel centres at (i + 1/2) / T_l cells).
+// p's texel coordinates are clamped to +-2^30 (int range).
 GLINT_FN real glint_scratch_coverage_bilinear(GLINT_SCRATCH_DATA_PARAM int base, int R, real texels_per_cell, vec2 p) {
-    vec2 q = p * texels_per_cell - vec2(real(0.5));
-    vec2 f = floor(q);
-    vec2 w = q - f;
-    // Reduce modulo R before converting (p may be far from the origin).
-    vec2 m = f - real(R) * floor(f / real(R));
-    int x = int(m.x), y = int(m.y);
+    vec2 q = clamp(p * texels_per_cell - vec2(real(0.5)), vec2(real(-1073741824)), vec2(real(1073741824)));
+    // floor by truncation (a libm call in C++ without SSE4.1, and the hot spot here), then the
+    // texel indices wrap by masking in glint_scratch_coverage_texel.
+    int x = int(q.x), y = int(q.y);
+    if (real(x) > q.x) x -= 1;
+    if (real(y) > q.y) y -= 1;
+    vec2 w = q - vec2(real(x), real(y));
     real c00 = glint_scratch_coverage_texel(GLINT_SCRATCH_DATA_ARG base, R, x, y), c10 = glint_scratch_coverage_texel(GLINT_SCRATCH_DATA_ARG base, R, x + 1, y);
     real c01 = glint_scratch_coverage_texel(GLINT_SCRATCH_DATA_ARG base, R, x, y + 1), c11 = glint_scratch_coverage_texel(GLINT_SCRATCH_DATA_ARG base, R, x + 1, y + 1);
     return mix(mix(c00, c10, w.x), mix(c01, c11, w.x), w.y);
 }
 
-// Layer k's relative area under the Gaussian footprint (x; axes a, b in x) from the coverage
-// pyramid, as GPUs filter anisotropically: the footprint's axes in noise space give its sd along
-// the major (s1) and minor (s2) directions; up to 16 taps at the major axis's normal quantiles,
-// each a trilinear read at the level whose texel is 2 max(s2, s1 / 16) wide. The box and tent
-// filters stand in for the Gaussian (error measured in docs/scratch.md). Footprints below half a
-// level-0 texel use the exact indicator through glint_scratch_alpha_footprint with the jitter.
-GLINT_FN real glint_scratch_material_alpha(GLINT_SCRATCH_DATA_PARAM int k, vec2 x, vec2 a, vec2 b, vec2 jitter) {
-    int h = glint_scratch_material_header(int(GLINT_SCRATCH_FETCH(0).x));
+// A footprint in a layer's noise space: centre p, major axis e, sd s1 along it and s2 across.
+struct glint_scratch_noise_footprint {
+    vec2 p;
+    vec2 e;
+    real s1;
+    real s2;
+};
+
+GLINT_FN glint_scratch_noise_footprint glint_scratch_to_noise(glint_scratch_layer L, vec2 x, vec2 a, vec2 b) {
+    glint_scratch_noise_footprint r;
+    vec2 ap = glint_scratch_layer_axis(L, a), bp = glint_scratch_layer_axis(L, b);
+    // The covariance a a^T + b b^T in noise space and its eigen-decomposition.
+    real sxx = ap.x * ap.x + bp.x * bp.x, syy = ap.y * ap.y + bp.y * bp.y, sxy = ap.x * ap.y + bp.x * bp.y;
+    real half_tr = real(0.5) * (sxx + syy), root = sqrt(max(real(0.25) * (sxx - syy) * (sxx - syy) + sxy * sxy, real(0)));
+    r.s1 = sqrt(max(half_tr + root, real(0)));
+    r.s2 = sqrt(max(half_tr - root, real(0)));
+    // The major axis: of the two forms of the eigenvector, the longer (better conditioned).
+    vec2 e1 = vec2(r.s1 * r.s1 - syy, sxy), e2 = vec2(sxy, r.s1 * r.s1 - sxx);
+    vec2 e = (dot(e1, e1) >= dot(e2, e2)) ? e1 : e2;
+    real le = length(e);
+    r.e = (le > real(0)) ? e / le : vec2(real(1), real(0));
+    r.p = glint_scratch_layer_point(L, x);
+    return r;
+}
+
+// The pyramid read trilinearly at noise point q and level of detail lod (0 = finest).
+GLINT_FN real glint_scratch_coverage_trilinear(GLINT_SCRATCH_DATA_PARAM int h, vec2 q, real lod) {
     vec4 head = GLINT_SCRATCH_FETCH(h);
     int K = int(head.x), T = int(head.z), levels = int(head.w);
     int R0 = int(GLINT_SCRATCH_FETCH(h + 1).w);
-    glint_scratch_layer L = glint_scratch_material_layer(GLINT_SCRATCH_DATA_ARG k);
-    vec2 ap = glint_scratch_layer_axis(L, a), bp = glint_scratch_layer_axis(L, b);
-    // The footprint covariance in noise space and its eigen-decomposition.
-    real sxx = ap.x * ap.x + bp.x * bp.x, syy = ap.y * ap.y + bp.y * bp.y, sxy = ap.x * ap.y + bp.x * bp.y;
-    real half_tr = real(0.5) * (sxx + syy), root = sqrt(max(real(0.25) * (sxx - syy) * (sxx - syy) + sxy * sxy, real(0)));
-    real s1 = sqrt(max(half_tr + root, real(0))), s2 = sqrt(max(half_tr - root, real(0)));
-    if (s1 * real(T) < real(0.5)) return glint_scratch_alpha_footprint(L, x, a, b, jitter);
-    // The major axis: of the two forms of the eigenvector, the longer (better conditioned).
-    vec2 e1 = vec2(s1 * s1 - syy, sxy), e2 = vec2(sxy, s1 * s1 - sxx);
-    vec2 e = (dot(e1, e1) >= dot(e2, e2)) ? e1 : e2;
-    real le = length(e);
-    e = (le > real(0)) ? e / le : vec2(real(1), real(0));
-    real s2e = max(s2, s1 / real(16));
-    int taps = int(clamp(ceil(s1 / s2e), real(1), real(16)));
-    real lod = clamp(log2(max(real(2) * s2e * real(T), real(1e-30))), real(0), real(levels - 1));
-    int l0 = int(floor(lod));
+    real l = clamp(lod, real(0), real(levels - 1));
+    int l0 = int(floor(l));
     int l1 = min(l0 + 1, levels - 1);
-    real fl = lod - real(l0);
-    // Level starts.
-    int base = h + 2 + 2 * K, b0 = base, b1 = base;
-    for (int l = 0; l < 24; ++l) {
-        if (l >= l1) break;
-        int R = R0 >> l;
+    real fl = l - real(l0);
+    int b0 = h + 2 + 2 * K, b1 = b0;
+    for (int j = 0; j < 24; ++j) {
+        if (j >= l1) break;
+        int R = R0 >> j;
         int size = max(1, (R * R) >> 2);
-        if (l < l0) b0 += size;
+        if (j < l0) b0 += size;
         b1 += size;
     }
-    int R_0 = R0 >> l0, R_1 = R0 >> l1;
-    real t0 = real(T) / real(1 << l0), t1 = real(T) / real(1 << l1);
-    vec2 p = glint_scratch_layer_point(L, x);
-    real sum = real(0);
+    real c0 = glint_scratch_coverage_bilinear(GLINT_SCRATCH_DATA_ARG b0, R0 >> l0, real(T) / real(1 << l0), q);
+    if (fl == real(0)) return c0;
+    return mix(c0, glint_scratch_coverage_bilinear(GLINT_SCRATCH_DATA_ARG b1, R0 >> l1, real(T) / real(1 << l1), q), fl);
+}
+
+// Layer k's relative area under the Gaussian footprint (x; axes a, b in x) from the coverage
+// pyramid, as GPUs filter anisotropically: up to 16 taps evenly spaced over +-2 s1 along the major
+// axis, weighted by the Gaussian exp(-z^2 / 2), each a trilinear read at the level whose texel is
+// 2 max(s2, s1 / 8) wide (anisotropy capped at 8; the tap spacing at most that texel). The box and
+// tent filters stand in for the Gaussian (error measured in docs/scratch.md). Footprints below half
+// a level-0 texel use the exact indicator through glint_scratch_alpha_footprint with the jitter.
+GLINT_FN real glint_scratch_material_alpha(GLINT_SCRATCH_DATA_PARAM int k, vec2 x, vec2 a, vec2 b, vec2 jitter) {
+    int h = glint_scratch_material_header(int(GLINT_SCRATCH_FETCH(0).x));
+    real T = GLINT_SCRATCH_FETCH(h).z;
+    glint_scratch_layer L = glint_scratch_material_layer(GLINT_SCRATCH_DATA_ARG k);
+    glint_scratch_noise_footprint n = glint_scratch_to_noise(L, x, a, b);
+    if (n.s1 * T < real(0.5)) return glint_scratch_alpha_footprint(L, x, a, b, jitter);
+    real s2e = max(n.s2, n.s1 / real(8));
+    int taps = int(clamp(ceil(real(2) * n.s1 / s2e), real(1), real(16)));
+    real lod = log2(max(real(2) * s2e * T, real(1e-30)));
+    real sum = real(0), wsum = real(0);
     for (int j = 0; j < 16; ++j) {
         if (j >= taps) break;
-        real z = (taps > 1) ? glint_normal_quantile((real(j) + real(0.5)) / real(taps)) : real(0);
-        vec2 q = p + (z * s1) * e;
-        sum += mix(glint_scratch_coverage_bilinear(GLINT_SCRATCH_DATA_ARG b0, R_0, t0, q), glint_scratch_coverage_bilinear(GLINT_SCRATCH_DATA_ARG b1, R_1, t1, q), fl);
+        real z = (taps > 1) ? real(2) * ((real(2 * j + 1) / real(taps)) - real(1)) : real(0);
+        real w = exp(real(-0.5) * z * z);
+        sum += w * glint_scratch_coverage_trilinear(GLINT_SCRATCH_DATA_ARG h, n.p + (z * n.s1) * n.e, lod);
+        wsum += w;
     }
-    return sum / real(taps);
+    return sum / wsum;
+}
+
+// A cheaper, blurrier area for layers that only enter Eq. 4's sum: one trilinear read at the
+// level of the footprint's major axis (isotropic: it averages along the scratches over the width
+// of the footprint across them).
+GLINT_FN real glint_scratch_material_alpha_coarse(GLINT_SCRATCH_DATA_PARAM int k, vec2 x, vec2 a, vec2 b) {
+    int h = glint_scratch_material_header(int(GLINT_SCRATCH_FETCH(0).x));
+    real T = GLINT_SCRATCH_FETCH(h).z;
+    glint_scratch_noise_footprint n = glint_scratch_to_noise(glint_scratch_material_layer(GLINT_SCRATCH_DATA_ARG k), x, a, b);
+    return glint_scratch_coverage_trilinear(GLINT_SCRATCH_DATA_ARG h, n.p, log2(max(real(2) * n.s1 * T, real(1e-30))));
 }
 
 // One point light on the whole SV-BRDF (RGB16 Eq. 4 with Eq. 6 per layer) at x, with frame f (n and
-// the surface tangent the layers rotate from), footprint axes a, b: every layer's area first (Eq. 4
-// needs their sum), then, for each layer with area >= cull and whose cone the light can reach, its
-// radiance. Returns the scratches' radiance (weighted) and the base BRDF's weight: the caller adds
+// the surface tangent the layers rotate from), footprint axes a, b: first the light cull per layer
+// and every layer's area (Eq. 4 needs their sum: glint_scratch_material_alpha for the layers the
+// light can reach, the coarse read for the rest, which only enter the sum), then, for each layer
+// the light reaches with area >= cull, its radiance (Eq. 6). Returns the scratches' radiance (weighted) and the base BRDF's weight: the caller adds
 // base_weight * f_base(wi = wl, wo) * E * cos.
 struct glint_scratch_lit {
     vec3 radiance;
@@ -547,10 +582,13 @@ GLINT_FN glint_scratch_lit glint_scratch_material_light(GLINT_SCRATCH_DATA_PARAM
     r.layers_shaded = 0;
     int K = min(glint_scratch_material_layer_count(GLINT_SCRATCH_DATA_ARG 0), GLINT_SCRATCH_MAX_LAYERS);
     real alpha[64];
+    bool reach[64];
     real sum = real(0);
+    bool lit = dot(wo, f.n) > real(0) && dot(wl, f.n) > real(0);
     for (int k = 0; k < GLINT_SCRATCH_MAX_LAYERS; ++k) {
         if (k >= K) break;
-        real al = glint_scratch_material_alpha(GLINT_SCRATCH_DATA_ARG k, x, a, b, jitter);
+        reach[k] = lit && glint_scratch_light_reaches(glint_scratch_layer_frame(f, glint_scratch_material_layer(GLINT_SCRATCH_DATA_ARG k)), wo, wl, psi);
+        real al = reach[k] ? glint_scratch_material_alpha(GLINT_SCRATCH_DATA_ARG k, x, a, b, jitter) : glint_scratch_material_alpha_coarse(GLINT_SCRATCH_DATA_ARG k, x, a, b);
         alpha[k] = (al >= cull) ? al : real(0);
         sum += alpha[k];
     }
@@ -559,9 +597,8 @@ GLINT_FN glint_scratch_lit glint_scratch_material_light(GLINT_SCRATCH_DATA_PARAM
     r.alpha_sum = sum;
     for (int k = 0; k < GLINT_SCRATCH_MAX_LAYERS; ++k) {
         if (k >= K) break;
-        if (!(alpha[k] > real(0))) continue;
+        if (!reach[k] || !(alpha[k] > real(0))) continue;
         glint_scratch_frame g = glint_scratch_layer_frame(f, glint_scratch_material_layer(GLINT_SCRATCH_DATA_ARG k));
-        if (!glint_scratch_light_reaches(g, wo, wl, psi)) continue;
         r.radiance += (alpha[k] * m.layer_scale) * glint_scratch_light_radiance(GLINT_SCRATCH_DATA_ARG g, wo, wl, irradiance, psi, n, jitter.x, filter_mode);
         r.layers_shaded += 1;
     }

@@ -4,14 +4,16 @@
 // (the coverage pyramid), so scratches resolve into glint lines up close and into a smeared
 // highlight far away.
 //
-//   glint_scratches [--pattern brushed|scratched|swirl|turned] [--profile quartic|shallow|v|ramp]
+//   glint_scratches [--pattern brushed|scratched|swirl|turned] [--profile quartic|shallow|v|deep|ramp]
 //                   [--bounces N] [--light point|env] [--env PATH.exr] [--distance D] [--spp N]
 //                   [--size WxH] [--out PATH.exr]
 //
 // Patterns (RGB16 Table 1 rows): brushed = Fig. 10b (6 layers within 5 degrees), scratched = Fig.
 // 10f (32 layers, all angles), swirl = 64 layers, all angles, denser (the lit scratches ring the
-// highlight), turned = concentric turning marks on the plane (a tangent field, Fig. 15). --bounces
-// caps the inter-reflections in the table (1: single scattering, what a normal map would give).
+// highlight), turned = concentric turning marks on the plane (a tangent field, Fig. 15). Profiles:
+// quartic D/W 0.5 (steep) or 0.05 (shallow), V-grooves of 35 or 60 degree facets (v, deep), a
+// 30-degree ramp. --bounces caps the inter-reflections in the table (1: single scattering, what a
+// normal map would give; light that needs more bounces is lost).
 // The base between the scratches is polished steel (GGX, alpha 0.03, exact iron Fresnel).
 #include <algorithm>
 #include <chrono>
@@ -38,7 +40,7 @@ namespace {
 [[noreturn]] void usage(const std::string& problem) {
     std::fprintf(stderr,
                  "glint_scratches: %s\n"
-                 "usage: glint_scratches [--pattern brushed|scratched|swirl|turned] [--profile quartic|shallow|v|ramp]\n"
+                 "usage: glint_scratches [--pattern brushed|scratched|swirl|turned] [--profile quartic|shallow|v|deep|ramp]\n"
                  "                       [--bounces N] [--light point|env] [--env PATH.exr] [--distance D] [--spp N]\n"
                  "                       [--size WxH] [--out PATH.exr]\n",
                  problem.c_str());
@@ -88,8 +90,8 @@ int main(int argc, char** argv) {
                 usage("--pattern must be brushed, scratched, swirl or turned, got '" + pattern + "'");
         } else if (a == "--profile") {
             profile = value();
-            if (profile != "quartic" && profile != "shallow" && profile != "v" && profile != "ramp")
-                usage("--profile must be quartic, shallow, v or ramp, got '" + profile + "'");
+            if (profile != "quartic" && profile != "shallow" && profile != "v" && profile != "deep" && profile != "ramp")
+                usage("--profile must be quartic, shallow, v, deep or ramp, got '" + profile + "'");
         } else if (a == "--bounces") bounces = static_cast<int>(parse_float(a, value(), 1, 4096, usage));
         else if (a == "--light") {
             light = value();
@@ -117,6 +119,7 @@ int main(int argc, char** argv) {
         const glint::scratch_profile p = profile == "quartic" ? glint::make_quartic_groove(0.5)
                                          : profile == "shallow" ? glint::make_quartic_groove(0.05)
                                          : profile == "v" ? glint::make_v_groove(35 * deg)
+                                         : profile == "deep" ? glint::make_v_groove(60 * deg)
                                                           : glint::make_ramp_profile(30 * deg);
         glint::scratch_table_options o;
         o.max_bounces = bounces;
@@ -177,10 +180,11 @@ int main(int argc, char** argv) {
                     // Importance sampling of the SV-BRDF (RGB16 Sec. 5.1): the base or a layer per
                     // sample by their Eq. 4 weights.
                     const auto world = [&](const vec3& v) { return v.x * ht.t + v.y * ht.b + v.z * ht.n; };
+                    const auto areas = mview.areas(p, a, b, jitter);
                     for (int s = 0; s < spp; ++s) {
                         const std::uint32_t key = static_cast<std::uint32_t>(x + w * y);
                         const float u0 = hash01(key, static_cast<std::uint32_t>(s), 3), u1 = hash01(key, static_cast<std::uint32_t>(s), 4), u2 = hash01(key, static_cast<std::uint32_t>(s), 5);
-                        const auto pick = mview.sample(f, p, a, b, wo, u0, u1, u2, jitter);
+                        const auto pick = mview.sample_with(f, areas, wo, u0, u1, u2);
                         if (pick.layer >= 0) {
                             if (pick.s.valid) L += pick.s.weight * env(world(pick.s.wi));
                         } else {

@@ -265,6 +265,31 @@ struct scratch_table_options {
 
 namespace detail {
 
+// Fresnel tabulated over the cosine for the tracer: 4096 equal steps per channel, read linearly.
+// Exact Fresnel costs about 15 ns per channel and bounce and dominated colour tables; the table's
+// error is at most max|F''| / (8 4096^2) (Schlick: 20 / 1.3e8 = 1.5e-7); measured below 1e-6 for
+// every preset (tests/unit/test_scratch.cpp: 5.3e-7 at worst, iron).
+struct fresnel_table {
+    static constexpr int steps = 4096;
+    std::vector<glm::dvec3> v;
+    explicit fresnel_table(const scratch_fresnel& f) : v(steps + 1) {
+        for (int i = 0; i <= steps; ++i) v[static_cast<std::size_t>(i)] = f(static_cast<double>(i) / steps);
+    }
+    glm::dvec3 operator()(double c) const {
+        const double t = std::min(std::max(c, 0.0), 1.0) * steps;
+        const int i = std::min(static_cast<int>(t), steps - 1);
+        const double w = t - i;
+        const glm::dvec3 &a = v[static_cast<std::size_t>(i)], &b = v[static_cast<std::size_t>(i + 1)];
+        return a + w * (b - a);
+    }
+    double first(double c) const {
+        const double t = std::min(std::max(c, 0.0), 1.0) * steps;
+        const int i = std::min(static_cast<int>(t), steps - 1);
+        const double w = t - i, a = v[static_cast<std::size_t>(i)].x;
+        return a + w * (v[static_cast<std::size_t>(i + 1)].x - a);
+    }
+};
+
 // The profile's polyline prepared for tracing: segment normals and a binary tree of the highest
 // point under each node, so a ray finds its next hit in about log2(segments) node tests: a node
 // the ray passes above over the node's x range holds no hit.
@@ -405,12 +430,12 @@ struct scratch_tracer {
 
     // Traces a ray entering the opening at (x0, 0) with direction (dx, dy), dy < 0: mirror
     // reflections until it rises above the base (heights are <= 0) or max_bounces is reached (lost).
-    exit_ray trace(double x0, double dx, double dy, int max_bounces, const scratch_fresnel& fresnel, bool grey) const {
+    // fresnel: nullptr for a mirror; grey: one channel serves all three.
+    exit_ray trace(double x0, double dx, double dy, int max_bounces, const fresnel_table* fresnel, bool grey) const {
         exit_ray r{dx, dy, glm::dvec3(1.0), glm::dvec3(1.0), 0, false};
         double px = x0, py = 0;
         int skip = -1;
         double skip_off = 0;
-        const bool mirror = fresnel.model == fresnel_model::mirror;
         for (;;) {
             if (r.dy > 0 && py >= 0) return r;
             hit hh{-1, 0, 0};
@@ -443,12 +468,9 @@ struct scratch_tracer {
             r.dx -= 2 * d * nx, r.dy -= 2 * d * ny;
             const double l = std::sqrt(r.dx * r.dx + r.dy * r.dy);
             r.dx /= l, r.dy /= l;
-            if (!mirror) {
-                if (grey) {
-                    r.f0 *= fresnel.channel(0, std::fabs(d)), r.f60 *= fresnel.channel(0, 0.5 * std::fabs(d));
-                } else {
-                    r.f0 *= fresnel(std::fabs(d)), r.f60 *= fresnel(0.5 * std::fabs(d));
-                }
+            if (fresnel) {
+                if (grey) r.f0 *= fresnel->first(std::fabs(d)), r.f60 *= fresnel->first(0.5 * std::fabs(d));
+                else r.f0 *= (*fresnel)(std::fabs(d)), r.f60 *= (*fresnel)(0.5 * std::fabs(d));
             }
             ++r.bounces;
             px = hh.x, py = hh.y, skip = hh.k, skip_off = off;
@@ -548,6 +570,8 @@ inline scratch_table build_scratch_table(const scratch_profile& profile, const s
     const std::size_t MM = static_cast<std::size_t>(M) * static_cast<std::size_t>(M);
     const detail::scratch_tracer tracer(profile);
     const bool grey = fresnel.grey();
+    const detail::fresnel_table ftable(fresnel);
+    const detail::fresnel_table* fptr = fresnel.model == fresnel_model::mirror ? nullptr : &ftable;
     // Traced counts, [incident i][exit j].
     std::vector<double> wm(MM, 0.0), w0[3], w60[3];
     for (int c = 0; c < 3; ++c) w0[c].assign(MM, 0.0), w60[c].assign(MM, 0.0);
@@ -591,7 +615,7 @@ inline scratch_table build_scratch_table(const scratch_profile& profile, const s
                 const double x0 = -0.5 + (r + detail::scratch_unit(u.x)) / N;
                 const double s = std::min(1.0, std::max(-1.0, s0 + detail::scratch_unit(u.y) * ds));
                 // Light arrives from phi_i: the ray travels along -(sin phi_i, cos phi_i).
-                const auto e = tracer.trace(x0, -s, -std::sqrt((1 - s) * (1 + s)), options.max_bounces, fresnel, grey);
+                const auto e = tracer.trace(x0, -s, -std::sqrt((1 - s) * (1 + s)), options.max_bounces, fptr, grey);
                 most = std::max(most, e.bounces);
                 if (e.lost || !(e.dy > 0)) {  // capped, or (rounding) left below the base: lost
                     ++lost;
@@ -811,6 +835,8 @@ template <class real>
 using scratch_lit = typename detail::glsl::kernels<real>::glint_scratch_lit;
 template <class real>
 using scratch_pick = typename detail::glsl::kernels<real>::glint_scratch_pick;
+template <class real>
+using scratch_areas = typename detail::glsl::kernels<real>::glint_scratch_areas;
 
 // The whole SV-BRDF's data (RGB16 Sec. 4.3, 5.3): a table, a distribution's layers and the baked
 // coverage pyramid of their shared noise pattern, in one vec4 buffer (layout in
@@ -923,6 +949,7 @@ public:
         const glm::vec<4, real, glm::defaultp>* data = nullptr;
         scratch_filter filter = scratch_filter::linear;
         real cull = real(1e-6);  // layers whose area is below this are skipped (RGB16 Sec. 6.1)
+        int layers = 0;          // the material's layer count (set by view())
 
         scratch_table::view_t<real> table() const {
             scratch_table::view_t<real> t;
@@ -938,7 +965,19 @@ public:
         // A point light (Eq. 4 with Eq. 6 per layer); frame f's u is the surface tangent.
         scratch_lit<real> light(const scratch_frame<real>& f, const v2& x, const v2& a, const v2& b, const v3& wo, const v3& wl, real irradiance,
                                 real psi = real(0.017453292519943295769), int n = 4, const v2& jitter = v2(real(0.5))) const {
+            if (layers == 0) {  // scratches disabled: no kernel call (a shader branches on a uniform)
+                scratch_lit<real> r{};
+                r.base_weight = real(1);
+                return r;
+            }
             return K::glint_scratch_material_light(data, f, x, a, b, jitter, wo, wl, irradiance, psi, n, cull, static_cast<int>(filter));
+        }
+        // Every layer's area and Eq. 4's weights at a footprint, once per pixel for sample_with.
+        scratch_areas<real> areas(const v2& x, const v2& a, const v2& b, const v2& jitter = v2(real(0.5))) const {
+            return K::glint_scratch_material_areas(data, x, a, b, jitter, cull);
+        }
+        scratch_pick<real> sample_with(const scratch_frame<real>& f, const scratch_areas<real>& A, const v3& wo, real u0, real u1, real u2) const {
+            return K::glint_scratch_material_sample_with(data, f, A, wo, u0, u1, u2, static_cast<int>(filter));
         }
         // Importance sampling (layer -1: sample the base BRDF).
         scratch_pick<real> sample(const scratch_frame<real>& f, const v2& x, const v2& a, const v2& b, const v3& wo, real u0, real u1, real u2,
@@ -950,6 +989,7 @@ public:
     view_t<real> view() const {
         view_t<real> v;
         v.data = data<real>().data();
+        v.layers = static_cast<int>(layers_f_.size());
         return v;
     }
 

@@ -143,8 +143,7 @@ TEST_CASE("scratch table: raw counts are reciprocal (chi-square over bin pairs);
     for (int i = 0; i < M; ++i) {
         const double phi = -pi / 2 + (i + 0.5) * pi / M;
         for (int r = 0; r < N; ++r) {
-            const auto e = tr.trace(-0.5 + (r + rnd(static_cast<std::uint32_t>(r), static_cast<std::uint32_t>(i), 3)) / N, -std::sin(phi), -std::cos(phi), 64,
-                                    glint::scratch_fresnel::mirror(), true);
+            const auto e = tr.trace(-0.5 + (r + rnd(static_cast<std::uint32_t>(r), static_cast<std::uint32_t>(i), 3)) / N, -std::sin(phi), -std::cos(phi), 64, nullptr, true);
             if (e.lost || !(e.dy > 0)) continue;
             const int j = K<double>::glint_scratch_bin(std::atan2(e.dx, e.dy), M);
             biased[static_cast<std::size_t>(j * M + i)] += 1 / (N * glint::scratch_table::bin_ds(j, M));

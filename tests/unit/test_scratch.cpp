@@ -456,3 +456,21 @@ TEST_CASE("scratch material: the coarse areas of unlit layers move Eq. 4's base 
     CHECK(mean < 0.02);
     CHECK(worst < 0.3);
 }
+
+TEST_CASE("scratch table: the tracer's tabulated Fresnel is within 1e-6 of the exact models") {
+    glint::scratch_fresnel gold, laz;
+    gold.model = glint::fresnel_model::conductor_exact, gold.eta = glm::dvec3(0.18, 0.42, 1.37), gold.k = glm::dvec3(3.42, 2.35, 1.77);
+    laz.model = glint::fresnel_model::lazanyi, laz.eta = glm::dvec3(2.91), laz.k = glm::dvec3(3.09), laz.lazanyi_a = 0.3;
+    const glint::scratch_fresnel models[] = {glint::scratch_fresnel::iron(), glint::scratch_fresnel::plastic(), glint::scratch_fresnel::schlick(glm::dvec3(0.04, 0.5, 0.95)), gold, laz};
+    for (const auto& f : models) {
+        const glint::detail::fresnel_table t(f);
+        double worst = 0;
+        for (std::uint32_t k = 0; k < 100000; ++k) {
+            const double c = rnd(k, 81);
+            const glm::dvec3 e = f(c), a = t(c);
+            worst = std::max({worst, std::fabs(e.x - a.x), std::fabs(e.y - a.y), std::fabs(e.z - a.z)});
+        }
+        MESSAGE("model " << static_cast<int>(f.model) << ": worst table error " << worst);
+        CHECK(worst < 1e-6);
+    }
+}

@@ -581,6 +581,9 @@ GLINT_FN glint_scratch_lit glint_scratch_material_light(GLINT_SCRATCH_DATA_PARAM
     r.radiance = vec3(real(0));
     r.layers_shaded = 0;
     int K = min(glint_scratch_material_layer_count(GLINT_SCRATCH_DATA_ARG 0), GLINT_SCRATCH_MAX_LAYERS);
+    r.base_weight = real(1);
+    r.alpha_sum = real(0);
+    if (K == 0) return r;  // scratches disabled: the base BRDF alone, at the cost of two reads
     real alpha[64];
     bool reach[64];
     real sum = real(0);
@@ -615,8 +618,31 @@ struct glint_scratch_pick {
     int layer;
 };
 
-GLINT_FN glint_scratch_pick glint_scratch_material_sample(GLINT_SCRATCH_DATA_PARAM glint_scratch_frame f, vec2 x, vec2 a, vec2 b, vec2 jitter, vec3 wo, real u0,
-                                                          real u1, real u2, real cull, int filter_mode) {
+// Every layer's area under a footprint (below cull: 0) and Eq. 4's weights, computed once per
+// pixel for any number of glint_scratch_material_sample_with draws.
+struct glint_scratch_areas {
+    real alpha[64];
+    int count;
+    glint_scratch_mix mix;
+};
+
+GLINT_FN glint_scratch_areas glint_scratch_material_areas(GLINT_SCRATCH_DATA_PARAM vec2 x, vec2 a, vec2 b, vec2 jitter, real cull) {
+    glint_scratch_areas r;
+    r.count = min(glint_scratch_material_layer_count(GLINT_SCRATCH_DATA_ARG 0), GLINT_SCRATCH_MAX_LAYERS);
+    real sum = real(0);
+    for (int k = 0; k < GLINT_SCRATCH_MAX_LAYERS; ++k) {
+        r.alpha[k] = real(0);
+        if (k >= r.count) continue;
+        real al = glint_scratch_material_alpha(GLINT_SCRATCH_DATA_ARG k, x, a, b, jitter);
+        r.alpha[k] = (al >= cull) ? al : real(0);
+        sum += r.alpha[k];
+    }
+    r.mix = glint_scratch_mix_weights(sum);
+    return r;
+}
+
+GLINT_FN glint_scratch_pick glint_scratch_material_sample_with(GLINT_SCRATCH_DATA_PARAM glint_scratch_frame f, glint_scratch_areas A, vec3 wo, real u0, real u1,
+                                                               real u2, int filter_mode) {
     glint_scratch_pick r;
     r.layer = -1;
     r.s.wi = f.n;
@@ -624,29 +650,28 @@ GLINT_FN glint_scratch_pick glint_scratch_material_sample(GLINT_SCRATCH_DATA_PAR
     r.s.phi_i = real(0);
     r.s.pdf_phi = real(0);
     r.s.valid = false;
-    int K = min(glint_scratch_material_layer_count(GLINT_SCRATCH_DATA_ARG 0), GLINT_SCRATCH_MAX_LAYERS);
-    real alpha[64];
-    real sum = real(0);
-    for (int k = 0; k < GLINT_SCRATCH_MAX_LAYERS; ++k) {
-        if (k >= K) break;
-        real al = glint_scratch_material_alpha(GLINT_SCRATCH_DATA_ARG k, x, a, b, jitter);
-        alpha[k] = (al >= cull) ? al : real(0);
-        sum += alpha[k];
-    }
-    glint_scratch_mix m = glint_scratch_mix_weights(sum);
-    real t = clamp(u0, real(0), real(1)) - m.base_weight;
+    real t = clamp(u0, real(0), real(1)) - A.mix.base_weight;
     if (t < real(0)) return r;
+    int last = -1;
     for (int k = 0; k < GLINT_SCRATCH_MAX_LAYERS; ++k) {
-        if (k >= K) break;
-        real w = alpha[k] * m.layer_scale;
-        if (w > real(0) && (t < w || k == K - 1)) {
-            r.layer = k;
-            r.s = glint_scratch_sample_cone(GLINT_SCRATCH_DATA_ARG glint_scratch_layer_frame(f, glint_scratch_material_layer(GLINT_SCRATCH_DATA_ARG k)), wo, u1, u2, filter_mode);
-            return r;
-        }
+        if (k >= A.count) break;
+        real w = A.alpha[k] * A.mix.layer_scale;
+        if (!(w > real(0))) continue;
+        last = k;
+        if (t < w) break;
         t -= w;
     }
+    // Rounding may leave t past the last weight: the last layer with one takes it.
+    if (last < 0) return r;
+    r.layer = last;
+    r.s = glint_scratch_sample_cone(GLINT_SCRATCH_DATA_ARG glint_scratch_layer_frame(f, glint_scratch_material_layer(GLINT_SCRATCH_DATA_ARG last)), wo, u1, u2, filter_mode);
     return r;
+}
+
+GLINT_FN glint_scratch_pick glint_scratch_material_sample(GLINT_SCRATCH_DATA_PARAM glint_scratch_frame f, vec2 x, vec2 a, vec2 b, vec2 jitter, vec3 wo, real u0,
+                                                          real u1, real u2, real cull, int filter_mode) {
+    return glint_scratch_material_sample_with(GLINT_SCRATCH_DATA_ARG f, glint_scratch_material_areas(GLINT_SCRATCH_DATA_ARG x, a, b, jitter, cull), wo, u0, u1, u2,
+                                              filter_mode);
 }
 
 #endif  // GLINT_SCRATCH_FETCH

@@ -5,12 +5,13 @@
 // highlight far away.
 //
 //   glint_scratches [--pattern brushed|scratched|swirl|turned] [--profile quartic|shallow|v|deep|ramp]
-//                   [--bounces N] [--light point|env] [--env PATH.exr] [--distance D] [--spp N]
-//                   [--size WxH] [--out PATH.exr]
+//                   [--bounces N] [--layers K] [--light point|env] [--env PATH.exr] [--distance D]
+//                   [--spp N] [--size WxH] [--out PATH.exr]
 //
 // Patterns (RGB16 Table 1 rows): brushed = Fig. 10b (6 layers within 5 degrees), scratched = Fig.
 // 10f (32 layers, all angles), swirl = 64 layers, all angles, denser (the lit scratches ring the
-// highlight), turned = concentric turning marks on the plane (a tangent field, Fig. 15). Profiles:
+// highlight), turned = concentric turning marks on the plane (a tangent field, Fig. 15); --layers
+// overrides the pattern's layer count (0: the base BRDF alone). Profiles:
 // quartic D/W 0.5 (steep) or 0.05 (shallow), V-grooves of 35 or 60 degree facets (v, deep), a
 // 30-degree ramp. --bounces caps the inter-reflections in the table (1: single scattering, what a
 // normal map would give; light that needs more bounces is lost).
@@ -41,8 +42,8 @@ namespace {
     std::fprintf(stderr,
                  "glint_scratches: %s\n"
                  "usage: glint_scratches [--pattern brushed|scratched|swirl|turned] [--profile quartic|shallow|v|deep|ramp]\n"
-                 "                       [--bounces N] [--light point|env] [--env PATH.exr] [--distance D] [--spp N]\n"
-                 "                       [--size WxH] [--out PATH.exr]\n",
+                 "                       [--bounces N] [--layers K] [--light point|env] [--env PATH.exr] [--distance D]\n"
+                 "                       [--spp N] [--size WxH] [--out PATH.exr]\n",
                  problem.c_str());
     std::exit(2);
 }
@@ -79,7 +80,7 @@ float hash01(std::uint32_t a, std::uint32_t b, std::uint32_t c) { return glint::
 int main(int argc, char** argv) {
     std::string pattern = "scratched", profile = "quartic", light = "point", env_path = std::string(GLINT_DATA_DIR) + "/envmaps/studio.exr",
                 out = "glint_scratches.exr";
-    int w = 640, h = 400, bounces = 64, spp = 32;
+    int w = 640, h = 400, bounces = 64, spp = 32, layers = -1;
     float distance = 1.0f;
     for (int i = 1; i < argc; ++i) {
         const std::string a = argv[i];
@@ -93,6 +94,7 @@ int main(int argc, char** argv) {
             if (profile != "quartic" && profile != "shallow" && profile != "v" && profile != "deep" && profile != "ramp")
                 usage("--profile must be quartic, shallow, v, deep or ramp, got '" + profile + "'");
         } else if (a == "--bounces") bounces = static_cast<int>(parse_float(a, value(), 1, 4096, usage));
+        else if (a == "--layers") layers = static_cast<int>(parse_float(a, value(), 0, 64, usage));
         else if (a == "--light") {
             light = value();
             if (light != "point" && light != "env") usage("--light must be point or env, got '" + light + "'");
@@ -110,6 +112,7 @@ int main(int argc, char** argv) {
     else if (pattern == "scratched") dist.layers = 32, dist.spread_deg = 360, dist.length = 0.1, dist.width = 2e-4, dist.density = 0.05;
     else if (pattern == "swirl") dist.layers = 64, dist.spread_deg = 360, dist.length = 0.1, dist.width = 2e-4, dist.density = 0.08;
     else dist.layers = 4, dist.spread_deg = 2, dist.length = 0.3, dist.width = 3e-4, dist.density = 0.3;
+    if (layers >= 0) dist.layers = layers;  // the pattern's layer count otherwise
     dist.seed = 7;
     envmap env;
     glint::scratch_table table;

@@ -73,20 +73,21 @@ TEST_CASE("scratch V-groove at normal incidence: two spikes at +-2 beta with the
     // the left facet's exits 2 beta - phi_i fill exactly bin 45 and the right facet's bin 17.
     // Expected mass: a ray of angle phi meets the left facet when it enters left of d tan(phi),
     // d = tan(beta) / 2, so P(left) = E[1/2 + tan(beta) tan(phi) / 2] over sin(phi) uniform in the bin,
-    // and its Fresnel at cos(beta - phi). N = 200,000 rays in the row: sd <= 0.5 / sqrt(N) = 1.1e-3
+    // and its Fresnel at cos(beta - phi) (at theta = pi/3: cos(beta - phi) / 2). N = 200,000 rays in the row: sd <= 0.5 / sqrt(N) = 1.1e-3
     // of the row's mass; tolerance 5 sd (two-sided p 6e-7 each).
     const int M = 64, N = 200000;
     const double beta = 0.5 * (46 * pi / M - pi / 2);
     const auto f = glint::scratch_fresnel::schlick(glm::dvec3(0.04, 0.5, 0.9));
     const auto t = table(glint::make_v_groove(beta), f, M, N, false);
     const int row = 32;
-    double left = 0, right = 0, fl = 0, fr = 0;
+    double left = 0, right = 0, fl = 0, fr = 0, fl60 = 0;
     const double s0 = std::sin(-pi / 2 + row * pi / M), s1 = std::sin(-pi / 2 + (row + 1) * pi / M);
     const int q = 20000;
     for (int k = 0; k < q; ++k) {
         const double s = s0 + (k + 0.5) / q * (s1 - s0), phi = std::asin(s), pl = 0.5 + 0.5 * std::tan(beta) * std::tan(phi);
         left += pl / q, right += (1 - pl) / q;
         fl += pl * f(std::cos(beta - phi)).x / q, fr += (1 - pl) * f(std::cos(beta + phi)).x / q;
+        fl60 += pl * f(0.5 * std::cos(beta - phi)).x / q;
     }
     // The raw table holds rho[o][i] = count(i -> o) / (N ds_o).
     const auto mass = [&](const std::vector<double>& r, int o) { return r[static_cast<std::size_t>(o * M + row)] * glint::scratch_table::bin_ds(o, M); };
@@ -96,6 +97,11 @@ TEST_CASE("scratch V-groove at normal incidence: two spikes at +-2 beta with the
     CHECK(std::fabs(mass(t.rho_m(), 17) - right) < tol);
     CHECK(std::fabs(mass(t.rho_0(0), 45) - fl) < tol);
     CHECK(std::fabs(mass(t.rho_0(0), 17) - fr) < tol);
+    // Eq. 2's exponent of the spike's bin: ln r / ln(2/3), r = (F60 - F0) / (1 - F0) as masses
+    // (at phi_i = 0 exactly: ln[(F(cos(beta)/2) - F(cos beta)) / (1 - F(cos beta))] / ln(2/3)).
+    const double gamma = std::log((fl60 - fl) / (left - fl)) / std::log(2.0 / 3.0);
+    MESSAGE("left spike's gamma " << t.gamma(0)[static_cast<std::size_t>(45 * M + row)] << " (expected " << gamma << ")");
+    CHECK(t.gamma(0)[static_cast<std::size_t>(45 * M + row)] == doctest::Approx(gamma).epsilon(1e-3));
     double rest = 0;
     for (int o = 0; o < M; ++o)
         if (o != 45 && o != 17) rest += mass(t.rho_m(), o);

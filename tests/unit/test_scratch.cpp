@@ -474,3 +474,20 @@ TEST_CASE("scratch table: the tracer's tabulated Fresnel is within 1e-6 of the e
         CHECK(worst < 1e-6);
     }
 }
+
+TEST_CASE("scratch turned coordinates: circles (pitch 0) and an Archimedean spiral become lines along the first axis") {
+    const glm::dvec2 c(0.3, -0.2);
+    for (std::uint32_t k = 0; k < 1000; ++k) {
+        const double r = 0.01 + rnd(k, 91), a = 6.0 * (rnd(k, 92) - 0.5);
+        const glm::dvec2 p = c + r * glm::dvec2(std::cos(a), std::sin(a));
+        const auto q = glint::scratch_turned<double>(p, c, 0.0);
+        CHECK(q.x.y == doctest::Approx(r).epsilon(1e-12));                     // across: the radius
+        CHECK(std::fabs(glm::dot(q.tangent, p - c)) < 1e-12);                 // tangent along the circle
+        CHECK(glm::length(q.tangent) == doctest::Approx(1).epsilon(1e-12));
+        // On the spiral r = r0 + pitch angle / (2 pi), the second coordinate stays r0.
+        const double pitch = 0.05, ang = K<double>::glint_atan2(p.y - c.y, p.x - c.x);
+        const double rs = 0.2 + pitch * ang / (2 * pi);
+        const auto s = glint::scratch_turned<double>(c + rs * glm::dvec2(std::cos(ang), std::sin(ang)), c, pitch);
+        CHECK(s.x.y == doctest::Approx(0.2).epsilon(1e-9));
+    }
+}

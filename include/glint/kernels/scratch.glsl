@@ -1,8 +1,9 @@
 // glint's scratched materials (RGB16): the cone parametrization (Sec. 4.1, Eq. 1), the scratch
 // BRDF from its 2D table (Eq. 2), importance sampling of the reflection cone (Sec. 5.1, Eq. 5),
 // point lights through a normalised kernel (Sec. 5.2, Eq. 6), the layer mix of the SV-BRDF
-// (Sec. 4.3, Eq. 3-4) and the procedural scratch indicator (Sec. 5.3, Eq. 7). Needs core.glsl. The
-// host side (profiles, the ray-traced table, layer distributions) is in include/glint/scratch.hpp.
+// (Sec. 4.3, Eq. 3-4), the procedural scratch indicator (Sec. 5.3, Eq. 7) and the whole SV-BRDF over
+// a material buffer (table, layers, coverage pyramid). Needs core.glsl. The host side (profiles, the
+// ray-traced table, layer distributions, the pyramid) is in include/glint/scratch.hpp.
 //
 // Frame. u is the groove's direction (the tangent, made orthogonal to n), v = n x u. A direction
 // w has cone coordinates theta = asin(w.u) (latitude about u) and phi = atan2(w.v, w.n) (RGB16
@@ -430,6 +431,7 @@ GLINT_FN int glint_scratch_material_header(int M) {
     return 1 + M + 2 * M * M;
 }
 
+// The material's layer count (the int is unused: in C++ the data parameter needs one after it).
 GLINT_FN int glint_scratch_material_layer_count(GLINT_SCRATCH_DATA_PARAM int unused) {
     int M = int(GLINT_SCRATCH_FETCH(0).x);
     return int(GLINT_SCRATCH_FETCH(glint_scratch_material_header(M)).x) + 0 * unused;

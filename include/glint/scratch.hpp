@@ -851,7 +851,7 @@ public:
         const std::string what = "glint::scratch_material::build: ";
         if (texels_per_cell < 1 || texels_per_cell > 64 || (texels_per_cell & (texels_per_cell - 1)) != 0)
             throw error(what + "texels_per_cell = " + std::to_string(texels_per_cell) + " is not a power of two in [1, 64]");
-        if (static_cast<long>(d.period) * texels_per_cell > 8192)
+        if (static_cast<long>(d.period) * texels_per_cell > 8192)  // at most 14 levels (the header holds 16 starts)
             throw error(what + "period x texels_per_cell = " + std::to_string(static_cast<long>(d.period) * texels_per_cell) + " exceeds 8192");
         scratch_material m;
         m.layers_d_ = make_scratch_layers<double>(d);
@@ -906,6 +906,10 @@ public:
             out = table_data;
             out.push_back(V(layers.size(), d.period, texels_per_cell, m.levels_));
             out.push_back(V(d.density, seed >> 16, seed & 0xffffu, R0));
+            // The levels' starts, in vec4 from the first level's.
+            std::vector<double> starts(16, 0.0);
+            for (std::size_t l = 1; l < levels.size(); ++l) starts[l] = starts[l - 1] + static_cast<double>(std::max<std::size_t>(1, levels[l - 1].size() / 4));
+            for (std::size_t q = 0; q < 16; q += 4) out.push_back(V(starts[q], starts[q + 1], starts[q + 2], starts[q + 3]));
             for (const auto& l : layers) {
                 out.push_back(V(l.dir.x, l.dir.y, l.offset.x, l.offset.y));
                 out.push_back(V(l.inv_length, l.inv_width, 0, 0));
@@ -938,7 +942,7 @@ public:
     double mean_coverage() const { return mean_coverage_; }
     std::size_t memory_bytes() const { return data_f_.size() * sizeof(glm::vec4); }
     std::size_t table_bytes() const { return table_bytes_; }
-    std::size_t coverage_bytes() const { return memory_bytes() - table_bytes_ - 32 - 32 * layers_f_.size(); }
+    std::size_t coverage_bytes() const { return memory_bytes() - table_bytes_ - 6 * 16 - 32 * layers_f_.size(); }
 
     // Per-pixel access (the material must outlive the view).
     template <class real>

@@ -251,10 +251,18 @@ GLINT_FN real glint_scratch_pdf_phi(GLINT_SCRATCH_DATA_PARAM real phi_o, real ph
 
 // RGB16 Sec. 5.2's cull: a point light at wl can reach the reflection cone of wo through a kernel
 // of angular radius psi only where |theta_l + theta_o| <= psi (the angular distance from wl to the
-// cone's latitude circle theta = -theta_o; exact).
+// cone's latitude circle theta = -theta_o; exact). With a = sin(theta_o) = wo.u and b = sin(theta_l)
+// (unit directions), for psi < pi/2 that is: cos(theta_o + theta_l) > 0 and |sin(theta_o + theta_l)|
+// <= sin(psi), both from a and b with two square roots (no inverse trigonometry).
+GLINT_FN bool glint_scratch_latitudes_meet(real a, real b, real sin_psi) {
+    real ca = sqrt(max(real(1) - a * a, real(0))), cb = sqrt(max(real(1) - b * b, real(0)));
+    return ca * cb - a * b > real(0) && abs(a * cb + b * ca) <= sin_psi;
+}
+
 GLINT_FN bool glint_scratch_light_reaches(glint_scratch_frame f, vec3 wo, vec3 wl, real psi) {
-    vec2 a = glint_scratch_to_cone(f, wo), b = glint_scratch_to_cone(f, wl);
-    return abs(a.x + b.x) <= psi;
+    real lo = length(wo), ll = length(wl);
+    if (!(lo > real(0)) || !(ll > real(0))) return false;
+    return glint_scratch_latitudes_meet(dot(wo, f.u) / lo, dot(wl, f.u) / ll, sin(min(psi, real(1.5))));
 }
 
 // The light kernel's solid-angle normalisation int f dw = 2 pi (1 - cos psi) / 3 for
@@ -423,8 +431,10 @@ GLINT_FN glint_scratch_param glint_scratch_turned(vec2 p, vec2 c, real pitch) {
 // pyramid of the shared noise pattern (include/glint/scratch.hpp, scratch_material):
 //   [h]       (K layers, period P cells, T texels per cell at level 0, pyramid levels)
 //   [h + 1]   (density, seed >> 16, seed & 0xffff, R0 = P T)
-//   [h + 2 + 2k], [h + 3 + 2k]   layer k: (dir, offset), (inv_length, inv_width, 0, 0)
-//   [h + 2 + 2K ...]             level l (R_l = R0 / 2^l texels a side, l = 0 .. levels - 1):
+//   [h + 2 .. h + 5]             the start of level l at component l of these 16 floats, counted
+//                                from the first level's vec4 (levels <= 14)
+//   [h + 6 + 2k], [h + 7 + 2k]   layer k: (dir, offset), (inv_length, inv_width, 0, 0)
+//   [h + 6 + 2K ...]             level l (R_l = R0 / 2^l texels a side, l = 0 .. levels - 1):
 //                                max(1, R_l^2 / 4) vec4, texel (x, y) at component (x + R_l y) of them;
 //                                each texel the fraction of its square of noise space inside a scratch.
 GLINT_FN int glint_scratch_material_header(int M) {
@@ -440,7 +450,7 @@ GLINT_FN int glint_scratch_material_layer_count(GLINT_SCRATCH_DATA_PARAM int unu
 GLINT_FN glint_scratch_layer glint_scratch_material_layer(GLINT_SCRATCH_DATA_PARAM int k) {
     int h = glint_scratch_material_header(int(GLINT_SCRATCH_FETCH(0).x));
     vec4 head = GLINT_SCRATCH_FETCH(h), head2 = GLINT_SCRATCH_FETCH(h + 1);
-    vec4 a = GLINT_SCRATCH_FETCH(h + 2 + 2 * k), b = GLINT_SCRATCH_FETCH(h + 3 + 2 * k);
+    vec4 a = GLINT_SCRATCH_FETCH(h + 6 + 2 * k), b = GLINT_SCRATCH_FETCH(h + 7 + 2 * k);
     glint_scratch_layer L;
     L.dir = vec2(a.x, a.y);
     L.offset = vec2(a.z, a.w);
@@ -507,14 +517,8 @@ GLINT_FN real glint_scratch_coverage_trilinear(GLINT_SCRATCH_DATA_PARAM int h, v
     int l0 = int(floor(l));
     int l1 = min(l0 + 1, levels - 1);
     real fl = l - real(l0);
-    int b0 = h + 2 + 2 * K, b1 = b0;
-    for (int j = 0; j < 24; ++j) {
-        if (j >= l1) break;
-        int R = R0 >> j;
-        int size = max(1, (R * R) >> 2);
-        if (j < l0) b0 += size;
-        b1 += size;
-    }
+    int first = h + 6 + 2 * K;
+    int b0 = first + int(GLINT_SCRATCH_FETCH(h + 2 + (l0 >> 2))[l0 & 3]), b1 = first + int(GLINT_SCRATCH_FETCH(h + 2 + (l1 >> 2))[l1 & 3]);
     real c0 = glint_scratch_coverage_bilinear(GLINT_SCRATCH_DATA_ARG b0, R0 >> l0, real(T) / real(1 << l0), q);
     if (fl == real(0)) return c0;
     return mix(c0, glint_scratch_coverage_bilinear(GLINT_SCRATCH_DATA_ARG b1, R0 >> l1, real(T) / real(1 << l1), q), fl);
@@ -546,14 +550,25 @@ GLINT_FN real glint_scratch_material_alpha(GLINT_SCRATCH_DATA_PARAM int k, vec2 
     return sum / wsum;
 }
 
-// A cheaper, blurrier area for layers that only enter Eq. 4's sum: one trilinear read at the
-// level of the footprint's major axis (isotropic: it averages along the scratches over the width
-// of the footprint across them).
+// A cheaper, blurrier area for layers that only enter Eq. 4's sum: one bilinear read at the level
+// of the footprint's major axis (isotropic: it averages along the scratches over the width of the
+// footprint across them; nearest level, so it steps where the footprint crosses a level).
 GLINT_FN real glint_scratch_material_alpha_coarse(GLINT_SCRATCH_DATA_PARAM int k, vec2 x, vec2 a, vec2 b) {
     int h = glint_scratch_material_header(int(GLINT_SCRATCH_FETCH(0).x));
-    real T = GLINT_SCRATCH_FETCH(h).z;
-    glint_scratch_noise_footprint n = glint_scratch_to_noise(glint_scratch_material_layer(GLINT_SCRATCH_DATA_ARG k), x, a, b);
-    return glint_scratch_coverage_trilinear(GLINT_SCRATCH_DATA_ARG h, n.p, log2(max(real(2) * n.s1 * T, real(1e-30))));
+    vec4 head = GLINT_SCRATCH_FETCH(h);
+    int K = int(head.x), levels = int(head.w);
+    real T = head.z;
+    glint_scratch_layer L = glint_scratch_material_layer(GLINT_SCRATCH_DATA_ARG k);
+    // The major axis's sd from the trace of the covariance (s1^2 <= trace <= 2 s1^2): no
+    // eigen-decomposition. One bilinear read at the level nearest 2 s1's texel: with 4 T^2 trace =
+    // m 2^e (frexp, exact), round(log2(2 T sqrt(trace))) = floor(e / 2).
+    vec2 ap = glint_scratch_layer_axis(L, a), bp = glint_scratch_layer_axis(L, b);
+    int e;
+    frexp(max(real(4) * T * T * (dot(ap, ap) + dot(bp, bp)), real(1e-30)), e);
+    int l = clamp((e >= 0) ? e / 2 : -((1 - e) / 2), 0, levels - 1);
+    int R0 = int(GLINT_SCRATCH_FETCH(h + 1).w);
+    int base = h + 6 + 2 * K + int(GLINT_SCRATCH_FETCH(h + 2 + (l >> 2))[l & 3]);
+    return glint_scratch_coverage_bilinear(GLINT_SCRATCH_DATA_ARG base, R0 >> l, T / real(1 << l), glint_scratch_layer_point(L, x));
 }
 
 // One point light on the whole SV-BRDF (RGB16 Eq. 4 with Eq. 6 per layer) at x, with frame f (n and
@@ -589,10 +604,17 @@ GLINT_FN glint_scratch_lit glint_scratch_material_light(GLINT_SCRATCH_DATA_PARAM
     real alpha[64];
     bool reach[64];
     real sum = real(0);
-    bool lit = dot(wo, f.n) > real(0) && dot(wl, f.n) > real(0);
+    real lo = length(wo), ll = length(wl);
+    bool lit = dot(wo, f.n) > real(0) && dot(wl, f.n) > real(0) && lo > real(0) && ll > real(0);
+    // The light cull per layer from four dot products taken once: layer k's u is dir.x f.u +
+    // dir.y f.v, so sin(theta) = dir . (w.u, w.v).
+    vec2 o2 = lit ? vec2(dot(wo, f.u), dot(wo, f.v)) / lo : vec2(real(0)), l2 = lit ? vec2(dot(wl, f.u), dot(wl, f.v)) / ll : vec2(real(0));
+    real sin_psi = sin(min(psi, real(1.5)));
+    int h = glint_scratch_material_header(int(GLINT_SCRATCH_FETCH(0).x));
     for (int k = 0; k < GLINT_SCRATCH_MAX_LAYERS; ++k) {
         if (k >= K) break;
-        reach[k] = lit && glint_scratch_light_reaches(glint_scratch_layer_frame(f, glint_scratch_material_layer(GLINT_SCRATCH_DATA_ARG k)), wo, wl, psi);
+        vec4 dk = GLINT_SCRATCH_FETCH(h + 6 + 2 * k);
+        reach[k] = lit && glint_scratch_latitudes_meet(dk.x * o2.x + dk.y * o2.y, dk.x * l2.x + dk.y * l2.y, sin_psi);
         real al = reach[k] ? glint_scratch_material_alpha(GLINT_SCRATCH_DATA_ARG k, x, a, b, jitter) : glint_scratch_material_alpha_coarse(GLINT_SCRATCH_DATA_ARG k, x, a, b);
         alpha[k] = (al >= cull) ? al : real(0);
         sum += alpha[k];

@@ -10,6 +10,9 @@
 //   auto f = glint::make_scratch_frame(n, tangent);
 //   auto smp = view.sample(f, wo, u1, u2);                                // L_r ~ smp.weight * L_i(smp.wi)
 //   glm::vec3 L = view.light_radiance(f, wo, wl, I / r2);                 // a point light (Eq. 6)
+//   auto mat = glint::scratch_material::build(table, glint::scratch_distribution{});  // layers, coverage
+//   auto lit = mat.view<float>().light(f, x, a, b, wo, wl, I / r2);      // the SV-BRDF (Eq. 4, 6):
+//   // radiance = lit.radiance + lit.base_weight * base_brdf(wl, wo) * cos * I / r2
 //
 // The table (Sec. 4.1, notes 1.3): M x M bins over (phi_o, phi_i) in [-pi/2, pi/2]^2, bins of equal
 // angle. For each incident bin i, N rays enter the opening x in [-1/2, 1/2] (stratified) with

@@ -1,7 +1,10 @@
 #include "parity.hpp"
 
 #include <algorithm>
+#include <cstring>
 #include <stdexcept>
+
+#include <glint/glsl.hpp>
 
 namespace glint_test {
 
@@ -46,6 +49,32 @@ std::vector<std::uint32_t> map_words(const std::vector<std::string>& kernels, co
          body + "\n  }\n}\n";
     unsigned prog = gl().program(s);
     return gl().run(prog, {in}, items * out_words_per_item, items);
+}
+
+std::string glsl_float_bits(float x) {
+    std::uint32_t u;
+    std::memcpy(&u, &x, 4);
+    return "uintBitsToFloat(" + std::to_string(u) + "u)";
+}
+
+std::vector<std::uint32_t> map_words_with_data(const std::vector<std::string>& kernels, const std::string& data_kernel, const std::string& data_name,
+                                               const std::string& declared, const std::string& body, const std::vector<std::uint32_t>& in,
+                                               const std::vector<std::uint32_t>& data, std::size_t items, std::size_t out_words_per_item) {
+    std::string s = shader_header(kernels);
+    s += "layout(std430, binding = 0) readonly buffer In0 { uint in0[]; };\n"
+         "layout(std430, binding = 1) readonly buffer Data { vec4 " + data_name + "[]; };\n"
+         "layout(std430, binding = 2) writeonly buffer Out { uint out0[]; };\n"
+         "#define " + declared + "\n";
+    s += std::string(glint::glsl_source(data_kernel));
+    s += "float in_float(uint k) { return uintBitsToFloat(in0[k]); }\n"
+         "vec2 in_vec2(uint k) { return vec2(in_float(k), in_float(k + 1u)); }\n"
+         "vec3 in_vec3(uint k) { return vec3(in_float(k), in_float(k + 1u), in_float(k + 2u)); }\n"
+         "void main() {\n"
+         "  uint n = " + std::to_string(items) + "u;\n"
+         "  for (uint i = gl_GlobalInvocationID.x; i < n; i += gl_NumWorkGroups.x * gl_WorkGroupSize.x) {\n" +
+         body + "\n  }\n}\n";
+    unsigned prog = gl().program(s);
+    return gl().run(prog, {in, data}, items * out_words_per_item, items);
 }
 
 ulp_stats compare(const std::vector<float>& gpu, const std::vector<float>& cpu) {

@@ -25,6 +25,17 @@ std::vector<std::uint32_t> map_words(const std::vector<std::string>& kernels, co
                                      const std::vector<std::uint32_t>& in, std::size_t items,
                                      std::size_t out_words_per_item);
 
+// A float as a GLSL expression of its exact bits: "uintBitsToFloat(<bits>u)".
+std::string glsl_float_bits(float x);
+
+// As map_words, with `data` (vec4s) bound read-only at binding 1 as `vec4 <data_name>[]`, the
+// output at binding 2, and `declared` defined before the kernel file `data_kernel` (which reads
+// that buffer, e.g. gaussian.glsl's glint_element_data with GLINT_ELEMENT_BUFFER_DECLARED) is
+// included after `kernels`.
+std::vector<std::uint32_t> map_words_with_data(const std::vector<std::string>& kernels, const std::string& data_kernel, const std::string& data_name,
+                                               const std::string& declared, const std::string& body, const std::vector<std::uint32_t>& in,
+                                               const std::vector<std::uint32_t>& data, std::size_t items, std::size_t out_words_per_item);
+
 // How far a GLSL result array is from the C++ one: the largest ulp distance, and how many
 // elements differ at all (the mismatch rate). For a discrete sampler the rate counts outcomes
 // flipped by an input within rounding of a decision boundary; tests bound it.

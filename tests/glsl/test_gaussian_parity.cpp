@@ -124,30 +124,17 @@ TEST_CASE("direct P-NDF over an element buffer: GLSL against C++ on a noise map"
         const float det = static_cast<float>(static_cast<double>(cv[0][0]) * static_cast<double>(cv[1][1]) - static_cast<double>(cv[1][0]) * static_cast<double>(cv[1][0]));
         glint_test::append_words(in, {fps[i].center.x, fps[i].center.y, cv[0][0], cv[1][0], cv[1][1], std::max(det, 0.0f), ss[i].x, ss[i].y});
     }
-    const auto bits = [](float x) {
-        std::uint32_t u;
-        std::memcpy(&u, &x, 4);
-        return "uintBitsToFloat(" + std::to_string(u) + "u)";
-    };
-    std::string src = glint_test::shader_header({"core.glsl", "microfacet.glsl"});
-    src += "layout(std430, binding = 0) readonly buffer In0 { uint in0[]; };\n"
-           "layout(std430, binding = 1) readonly buffer glint_element_buffer { vec4 glint_element_data[]; };\n"
-           "layout(std430, binding = 2) writeonly buffer Out { uint out0[]; };\n"
-           "#define GLINT_ELEMENT_BUFFER_DECLARED\n";
-    src += std::string(glint::glsl_source("gaussian.glsl"));
-    src += "float in_float(uint k) { return uintBitsToFloat(in0[k]); }\n"
-           "void main() {\n"
-           "  for (uint i = gl_GlobalInvocationID.x; i < " + std::to_string(n) + "u; i += gl_NumWorkGroups.x * gl_WorkGroupSize.x) {\n"
-           "    uint b = 8u * i;\n"
-           "    glint_pndf_params p; p.sigma_h = " + bits(k.sigma_h) + "; p.sigma_r = " + bits(k.sigma_r) + "; p.spacing = " + bits(k.spacing) +
-           "; p.area = " + bits(k.area) + "; p.cull_u = " + bits(k.cull_u) + "; p.cull_s = " + bits(k.cull_s) + "; p.width = " + std::to_string(k.width) +
-           "; p.height = " + std::to_string(k.height) + "; p.periodic = " + std::to_string(k.periodic) + "; p.max_side = " + std::to_string(k.max_side) +
-           ";\n"
-           "    glint_pndf_frame f = glint_pndf_prepare(vec2(in_float(b), in_float(b + 1u)), vec4(in_float(b + 2u), in_float(b + 3u), in_float(b + 4u), in_float(b + 5u)), p.sigma_h, p.cull_u, p.cull_s);\n"
-           "    out0[i] = floatBitsToUint(glint_pndf_direct(f, vec2(in_float(b + 6u), in_float(b + 7u)), p));\n"
-           "  }\n}\n";
-    const unsigned prog = glint_test::gl().program(src);
-    const auto out = glint_test::from_words<float>(glint_test::gl().run(prog, {in, glint_test::to_words(pndf.element_data())}, n, n));
+    const auto bits = glint_test::glsl_float_bits;
+    const std::string body =
+        "    uint b = 8u * i;\n"
+        "    glint_pndf_params p; p.sigma_h = " + bits(k.sigma_h) + "; p.sigma_r = " + bits(k.sigma_r) + "; p.spacing = " + bits(k.spacing) +
+        "; p.area = " + bits(k.area) + "; p.cull_u = " + bits(k.cull_u) + "; p.cull_s = " + bits(k.cull_s) + "; p.width = " + std::to_string(k.width) +
+        "; p.height = " + std::to_string(k.height) + "; p.periodic = " + std::to_string(k.periodic) + "; p.max_side = " + std::to_string(k.max_side) +
+        ";\n"
+        "    glint_pndf_frame f = glint_pndf_prepare(vec2(in_float(b), in_float(b + 1u)), vec4(in_float(b + 2u), in_float(b + 3u), in_float(b + 4u), in_float(b + 5u)), p.sigma_h, p.cull_u, p.cull_s);\n"
+        "    out0[i] = floatBitsToUint(glint_pndf_direct(f, vec2(in_float(b + 6u), in_float(b + 7u)), p));";
+    const auto out = glint_test::from_words<float>(glint_test::map_words_with_data({"core.glsl", "microfacet.glsl"}, "gaussian.glsl", "glint_element_data",
+                                                                                   "GLINT_ELEMENT_BUFFER_DECLARED", body, in, glint_test::to_words(pndf.element_data()), n, 1));
     std::vector<float> cpu(n);
     std::size_t positive = 0;
     for (std::uint32_t i = 0; i < n; ++i) cpu[i] = pndf.eval_direct(fps[i], ss[i]), positive += cpu[i] > 0;

@@ -76,46 +76,32 @@ TEST_CASE("scratch kernels: GLSL against C++ (cone, Eq. 2, sampling, pdf, point 
         q.x = {rnd(i, 12) * 3, rnd(i, 13) * 3};
         glint_test::append_words(in, {q.n.x, q.n.y, q.n.z, q.t.x, q.t.y, q.t.z, q.wo.x, q.wo.y, q.wo.z, q.wl.x, q.wl.y, q.wl.z, q.u1, q.u2, q.jitter, q.x.x, q.x.y});
     }
-    const auto bits = [](float x) {
-        std::uint32_t u;
-        std::memcpy(&u, &x, 4);
-        return "uintBitsToFloat(" + std::to_string(u) + "u)";
-    };
+    const auto bits = glint_test::glsl_float_bits;
     const int outs = 16;
-    std::string src = glint_test::shader_header({"core.glsl"});
-    src += "layout(std430, binding = 0) readonly buffer In0 { uint in0[]; };\n"
-           "layout(std430, binding = 1) readonly buffer glint_scratch_buffer { vec4 glint_scratch_data[]; };\n"
-           "layout(std430, binding = 2) writeonly buffer Out { uint out0[]; };\n"
-           "#define GLINT_SCRATCH_BUFFER_DECLARED\n";
-    src += std::string(glint::glsl_source("scratch.glsl"));
-    src += "float in_float(uint k) { return uintBitsToFloat(in0[k]); }\n"
-           "vec3 in_vec3(uint k) { return vec3(in_float(k), in_float(k + 1u), in_float(k + 2u)); }\n"
-           "void main() {\n"
-           "  for (uint i = gl_GlobalInvocationID.x; i < " + std::to_string(n) + "u; i += gl_NumWorkGroups.x * gl_WorkGroupSize.x) {\n"
-           "    uint b = 17u * i; uint w = " + std::to_string(outs) + "u * i;\n"
-           "    glint_scratch_frame f = glint_scratch_make_frame(in_vec3(b), in_vec3(b + 3u));\n"
-           "    vec3 wo = in_vec3(b + 6u), wl = in_vec3(b + 9u);\n"
-           "    vec2 co = glint_scratch_to_cone(f, wo), cl = glint_scratch_to_cone(f, wl);\n"
-           "    out0[w] = floatBitsToUint(co.x); out0[w + 1u] = floatBitsToUint(co.y);\n"
-           "    out0[w + 2u] = floatBitsToUint(glint_scratch_from_cone(f, co).x);\n"
-           "    vec3 r1 = glint_scratch_rho(co.x, co.y, cl.y, 1); vec3 r0 = glint_scratch_rho(co.x, co.y, cl.y, 0);\n"
-           "    out0[w + 3u] = floatBitsToUint(r1.x); out0[w + 4u] = floatBitsToUint(r1.z); out0[w + 5u] = floatBitsToUint(r0.y);\n"
-           "    glint_scratch_sample s = glint_scratch_sample_cone(f, wo, in_float(b + 12u), in_float(b + 13u), 1);\n"
-           "    out0[w + 6u] = floatBitsToUint(s.weight.y); out0[w + 7u] = floatBitsToUint(s.phi_i); out0[w + 8u] = floatBitsToUint(s.pdf_phi);\n"
-           "    out0[w + 9u] = s.valid ? 1u : 0u;\n"
-           "    out0[w + 10u] = floatBitsToUint(glint_scratch_pdf_phi(co.y, cl.y, 1));\n"
-           "    out0[w + 11u] = floatBitsToUint(glint_scratch_light_radiance(f, wo, wl, 2.0, " + bits(psi) + ", 4, in_float(b + 14u), 1).x);\n"
-           "    out0[w + 12u] = glint_scratch_light_reaches(f, wo, wl, " + bits(psi) + ") ? 1u : 0u;\n"
-           "    glint_scratch_layer L; L.dir = vec2(" + bits(layer.dir.x) + ", " + bits(layer.dir.y) + "); L.offset = vec2(" + bits(layer.offset.x) + ", " +
+    const std::string body =
+        "    uint b = 17u * i; uint w = " + std::to_string(outs) + "u * i;\n"
+        "    glint_scratch_frame f = glint_scratch_make_frame(in_vec3(b), in_vec3(b + 3u));\n"
+        "    vec3 wo = in_vec3(b + 6u), wl = in_vec3(b + 9u);\n"
+        "    vec2 co = glint_scratch_to_cone(f, wo), cl = glint_scratch_to_cone(f, wl);\n"
+        "    out0[w] = floatBitsToUint(co.x); out0[w + 1u] = floatBitsToUint(co.y);\n"
+        "    out0[w + 2u] = floatBitsToUint(glint_scratch_from_cone(f, co).x);\n"
+        "    vec3 r1 = glint_scratch_rho(co.x, co.y, cl.y, 1); vec3 r0 = glint_scratch_rho(co.x, co.y, cl.y, 0);\n"
+        "    out0[w + 3u] = floatBitsToUint(r1.x); out0[w + 4u] = floatBitsToUint(r1.z); out0[w + 5u] = floatBitsToUint(r0.y);\n"
+        "    glint_scratch_sample s = glint_scratch_sample_cone(f, wo, in_float(b + 12u), in_float(b + 13u), 1);\n"
+        "    out0[w + 6u] = floatBitsToUint(s.weight.y); out0[w + 7u] = floatBitsToUint(s.phi_i); out0[w + 8u] = floatBitsToUint(s.pdf_phi);\n"
+        "    out0[w + 9u] = s.valid ? 1u : 0u;\n"
+        "    out0[w + 10u] = floatBitsToUint(glint_scratch_pdf_phi(co.y, cl.y, 1));\n"
+        "    out0[w + 11u] = floatBitsToUint(glint_scratch_light_radiance(f, wo, wl, 2.0, " + bits(psi) + ", 4, in_float(b + 14u), 1).x);\n"
+        "    out0[w + 12u] = glint_scratch_light_reaches(f, wo, wl, " + bits(psi) + ") ? 1u : 0u;\n"
+        "    glint_scratch_layer L; L.dir = vec2(" + bits(layer.dir.x) + ", " + bits(layer.dir.y) + "); L.offset = vec2(" + bits(layer.offset.x) + ", " +
            bits(layer.offset.y) + "); L.inv_length = " + bits(layer.inv_length) + "; L.inv_width = " + bits(layer.inv_width) + "; L.density = " + bits(layer.density) +
-           "; L.seed = " + std::to_string(layer.seed) + "u; L.period = " + std::to_string(layer.period) + ";\n"
-           "    vec2 x = vec2(in_float(b + 15u), in_float(b + 16u));\n"
-           "    out0[w + 13u] = floatBitsToUint(glint_scratch_indicator(L, x));\n"
-           "    out0[w + 14u] = floatBitsToUint(glint_scratch_alpha_footprint(L, x, vec2(0.02, 0.005), vec2(-0.004, 0.015), vec2(in_float(b + 13u), in_float(b + 14u))));\n"
-           "    out0[w + 15u] = floatBitsToUint(glint_scratch_mix_weights(in_float(b + 12u) * 2.0).base_weight);\n"
-           "  }\n}\n";
-    const unsigned prog = glint_test::gl().program(src);
-    const auto gpu = glint_test::gl().run(prog, {in, glint_test::to_words(data)}, n * outs, n);
+        "; L.seed = " + std::to_string(layer.seed) + "u; L.period = " + std::to_string(layer.period) + ";\n"
+        "    vec2 x = vec2(in_float(b + 15u), in_float(b + 16u));\n"
+        "    out0[w + 13u] = floatBitsToUint(glint_scratch_indicator(L, x));\n"
+        "    out0[w + 14u] = floatBitsToUint(glint_scratch_alpha_footprint(L, x, vec2(0.02, 0.005), vec2(-0.004, 0.015), vec2(in_float(b + 13u), in_float(b + 14u))));\n"
+        "    out0[w + 15u] = floatBitsToUint(glint_scratch_mix_weights(in_float(b + 12u) * 2.0).base_weight);\n";
+    const auto gpu = glint_test::map_words_with_data({"core.glsl"}, "scratch.glsl", "glint_scratch_data", "GLINT_SCRATCH_BUFFER_DECLARED", body, in,
+                                                     glint_test::to_words(data), n, outs);
     const auto gf = [&](std::size_t i, int k) {
         float x;
         std::memcpy(&x, &gpu[i * outs + static_cast<std::size_t>(k)], 4);
@@ -209,28 +195,17 @@ TEST_CASE("scratch material: GLSL against C++ (pyramid footprint area, SV-BRDF p
         glint_test::append_words(in, {q.wo.x, q.wo.y, q.wo.z, q.wl.x, q.wl.y, q.wl.z, q.x.x, q.x.y, q.a.x, q.a.y, q.b.x, q.b.y, q.jitter.x, q.jitter.y, q.u0});
     }
     const int outs = 5;
-    std::string src = glint_test::shader_header({"core.glsl"});
-    src += "layout(std430, binding = 0) readonly buffer In0 { uint in0[]; };\n"
-           "layout(std430, binding = 1) readonly buffer glint_scratch_buffer { vec4 glint_scratch_data[]; };\n"
-           "layout(std430, binding = 2) writeonly buffer Out { uint out0[]; };\n"
-           "#define GLINT_SCRATCH_BUFFER_DECLARED\n";
-    src += std::string(glint::glsl_source("scratch.glsl"));
-    src += "float in_float(uint k) { return uintBitsToFloat(in0[k]); }\n"
-           "vec2 in_vec2(uint k) { return vec2(in_float(k), in_float(k + 1u)); }\n"
-           "vec3 in_vec3(uint k) { return vec3(in_float(k), in_float(k + 1u), in_float(k + 2u)); }\n"
-           "void main() {\n"
-           "  for (uint i = gl_GlobalInvocationID.x; i < " + std::to_string(n) + "u; i += gl_NumWorkGroups.x * gl_WorkGroupSize.x) {\n"
-           "    uint b = 15u * i; uint w = " + std::to_string(outs) + "u * i;\n"
-           "    glint_scratch_frame f = glint_scratch_make_frame(vec3(0.0, 0.0, 1.0), vec3(1.0, 0.0, 0.0));\n"
-           "    vec2 x = in_vec2(b + 6u), a = in_vec2(b + 8u), bb = in_vec2(b + 10u), jit = in_vec2(b + 12u);\n"
-           "    out0[w] = floatBitsToUint(glint_scratch_material_alpha(3, x, a, bb, jit));\n"
-           "    glint_scratch_lit l = glint_scratch_material_light(f, x, a, bb, jit, in_vec3(b), in_vec3(b + 3u), 1.0, 0.05, 4, 1e-6, 1);\n"
-           "    out0[w + 1u] = floatBitsToUint(l.radiance.x); out0[w + 2u] = floatBitsToUint(l.base_weight);\n"
-           "    glint_scratch_pick p = glint_scratch_material_sample(f, x, a, bb, jit, in_vec3(b), in_float(b + 14u), 0.3, 0.6, 1e-6, 1);\n"
-           "    out0[w + 3u] = uint(p.layer + 1); out0[w + 4u] = floatBitsToUint(p.s.weight.x);\n"
-           "  }\n}\n";
-    const unsigned prog = glint_test::gl().program(src);
-    const auto gpu = glint_test::gl().run(prog, {in, glint_test::to_words(m.data<float>())}, n * outs, n);
+    const std::string body =
+        "    uint b = 15u * i; uint w = " + std::to_string(outs) + "u * i;\n"
+        "    glint_scratch_frame f = glint_scratch_make_frame(vec3(0.0, 0.0, 1.0), vec3(1.0, 0.0, 0.0));\n"
+        "    vec2 x = in_vec2(b + 6u), a = in_vec2(b + 8u), bb = in_vec2(b + 10u), jit = in_vec2(b + 12u);\n"
+        "    out0[w] = floatBitsToUint(glint_scratch_material_alpha(3, x, a, bb, jit));\n"
+        "    glint_scratch_lit l = glint_scratch_material_light(f, x, a, bb, jit, in_vec3(b), in_vec3(b + 3u), 1.0, 0.05, 4, 1e-6, 1);\n"
+        "    out0[w + 1u] = floatBitsToUint(l.radiance.x); out0[w + 2u] = floatBitsToUint(l.base_weight);\n"
+        "    glint_scratch_pick p = glint_scratch_material_sample(f, x, a, bb, jit, in_vec3(b), in_float(b + 14u), 0.3, 0.6, 1e-6, 1);\n"
+        "    out0[w + 3u] = uint(p.layer + 1); out0[w + 4u] = floatBitsToUint(p.s.weight.x);\n";
+    const auto gpu = glint_test::map_words_with_data({"core.glsl"}, "scratch.glsl", "glint_scratch_data", "GLINT_SCRATCH_BUFFER_DECLARED", body, in,
+                                                     glint_test::to_words(m.data<float>()), n, outs);
     const auto gf = [&](std::size_t i, int k) {
         float x;
         std::memcpy(&x, &gpu[i * outs + static_cast<std::size_t>(k)], 4);

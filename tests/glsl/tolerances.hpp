@@ -86,6 +86,6 @@ constexpr double PNDF_GLSL_MAX_MISMATCH_RATE = 0.0;
 // ulps; the share of results beyond 1e-4 (table reads) or 1e-3 (sampler, light) relative, and of
 // flipped decisions (validity, light cull, indicator), is bounded. Measured: rho 7.5e-5 at most
 // (none beyond), sample weight 6.5e-6, pdf 7.0e-5, point light 4.5e-4 of values beyond 1e-3
-// (worst 2.6e-3, at the kernel's edge where its weight is near 0), 1 light-cull flip in 20000.
+// (worst 2.6e-3, at the kernel's edge where its weight is near 0), no light-cull flip in 20000.
 constexpr double SCRATCH_CONE_GLSL_MAX_ABSOLUTE = 1e-5;
 constexpr double SCRATCH_GLSL_MAX_FLIP_RATE = 1e-3;

@@ -11,6 +11,8 @@
 #include <glint/grid.hpp>
 #include <glint/microfacet.hpp>
 
+#include "support/render.hpp"
+
 namespace glint_examples {
 
 using vec2 = glm::vec2;
@@ -230,6 +232,32 @@ inline void footprint_derivatives(const camera& cam, const hit& h, float fx, flo
     };
     duvdx = uv_of_displacement(h, on_plane(cam.ray(fx + 1, fy)));
     duvdy = uv_of_displacement(h, on_plane(cam.ray(fx, fy + 1)));
+}
+
+// Every pixel of cam on every core, with progress (render_rows): the ray through its centre and
+// its first hit; shade(x, y, d, hit, duvdx, duvdy) gives a hit's radiance (duvdx, duvdy the
+// footprint's uv derivatives), miss(d) a missed ray's. Fills rgb (w x h, row-major RGB).
+template <class Shade, class Miss>
+render_timing render_scene(const camera& cam, const std::string& label, std::vector<float>& rgb, Shade shade, Miss miss) {
+    const int w = cam.width, h = cam.height;
+    rgb.assign(3 * static_cast<std::size_t>(w) * static_cast<std::size_t>(h), 0.0f);
+    return render_rows(h, label, [&](int y) {
+        for (int x = 0; x < w; ++x) {
+            const float fx = static_cast<float>(x) + 0.5f, fy = static_cast<float>(y) + 0.5f;
+            const vec3 d = cam.ray(fx, fy);
+            const hit ht = intersect(cam.eye, d);
+            vec3 L;
+            if (!ht.found) {
+                L = miss(d);
+            } else {
+                vec2 duvdx, duvdy;
+                footprint_derivatives(cam, ht, fx, fy, duvdx, duvdy);
+                L = shade(x, y, d, ht, duvdx, duvdy);
+            }
+            const std::size_t i = 3 * (static_cast<std::size_t>(y) * static_cast<std::size_t>(w) + static_cast<std::size_t>(x));
+            rgb[i] = L.x, rgb[i + 1] = L.y, rgb[i + 2] = L.z;
+        }
+    });
 }
 
 inline vec3 render_pixel(const scene_options& opt, const light_setup& ls, const camera& cam, int x, int y, shading_counters& counters) {

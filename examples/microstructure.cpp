@@ -133,37 +133,27 @@ int main(int argc, char** argv) {
     const camera cam = close ? camera(w, h, vec3(0.45f, 1.05f, 1.5f), vec3(0.1f, 0.7f, 0.3f)) : camera(w, h);
     const light_setup ls{light_type::point};
     const float tex_per_uv = texels_per_unit / uv_per_unit;
-    std::vector<float> rgb(3 * static_cast<std::size_t>(w) * static_cast<std::size_t>(h));
-    const render_timing t = render_rows(h, "glint_microstructure: rendering " + std::to_string(w) + "x" + std::to_string(h), [&](int y) {
-        for (int x = 0; x < w; ++x) {
-            const float fx = static_cast<float>(x) + 0.5f, fy = static_cast<float>(y) + 0.5f;
-            const vec3 d = cam.ray(fx, fy);
-            const hit ht = intersect(cam.eye, d);
-            vec3 L(0);
-            if (!ht.found) {
-                L = light == "env" ? vec3(0.02f) : background(d);
-            } else {
-                vec2 duvdx, duvdy;
-                footprint_derivatives(cam, ht, fx, fy, duvdx, duvdy);
-                const auto fp = glint::footprint_from_uv_derivatives(ht.uv, duvdx, duvdy, tex_per_uv);
-                const vec3 wo = to_local(ht, -d);
-                const auto add = [&](const vec3& wi_world, const vec3& radiance) {
-                    const vec3 wi = to_local(ht, wi_world);
-                    if (!(wi.z > 0) || !(wo.z > 0)) return;
-                    for (int c = 0; c < 3; ++c) L[c] += pndf.brdf(fp, wi, wo, silver_eta[c], silver_k[c]) * wi.z * radiance[c];
-                };
-                if (light == "point") {
-                    const vec3 dl = ls.position - ht.p;
-                    add(glm::normalize(dl), vec3(ls.intensity / glm::dot(dl, dl)));
-                    L += vec3(0.004f, 0.0036f, 0.0032f);  // a faint ambient so the surfaces read
-                } else {
-                    for (const auto& e : env_lights) add(e.direction, e.radiance_over_pdf);
-                }
-            }
-            const std::size_t i = 3 * (static_cast<std::size_t>(y) * static_cast<std::size_t>(w) + static_cast<std::size_t>(x));
-            rgb[i] = L.x, rgb[i + 1] = L.y, rgb[i + 2] = L.z;
+    std::vector<float> rgb;
+    const auto shade = [&](int, int, const vec3& d, const hit& ht, const vec2& duvdx, const vec2& duvdy) {
+        vec3 L(0);
+        const auto fp = glint::footprint_from_uv_derivatives(ht.uv, duvdx, duvdy, tex_per_uv);
+        const vec3 wo = to_local(ht, -d);
+        const auto add = [&](const vec3& wi_world, const vec3& radiance) {
+            const vec3 wi = to_local(ht, wi_world);
+            if (!(wi.z > 0) || !(wo.z > 0)) return;
+            for (int c = 0; c < 3; ++c) L[c] += pndf.brdf(fp, wi, wo, silver_eta[c], silver_k[c]) * wi.z * radiance[c];
+        };
+        if (light == "point") {
+            const vec3 dl = ls.position - ht.p;
+            add(glm::normalize(dl), vec3(ls.intensity / glm::dot(dl, dl)));
+            L += vec3(0.004f, 0.0036f, 0.0032f);  // a faint ambient so the surfaces read
+        } else {
+            for (const auto& e : env_lights) add(e.direction, e.radiance_over_pdf);
         }
-    });
+        return L;
+    };
+    const auto miss = [&](const vec3& d) { return light == "env" ? vec3(0.02f) : background(d); };
+    const render_timing t = render_scene(cam, "glint_microstructure: rendering " + std::to_string(w) + "x" + std::to_string(h), rgb, shade, miss);
     std::fprintf(stderr, "\rglint_microstructure: rendered %dx%d (%s, %s) in %.2f s on %u threads\n", w, h, map_path.empty() ? pattern.c_str() : map_path.c_str(),
                  light.c_str(), t.seconds, t.threads);
     try {

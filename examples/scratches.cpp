@@ -147,66 +147,55 @@ int main(int argc, char** argv) {
     const light_setup ls{light_type::point};
     const float to_surface = 1.0f / uv_per_unit;  // scratch sizes are in scene units
     const vec2 turn_centre(0.0f, 0.0f);
-    std::vector<float> rgb(3 * static_cast<std::size_t>(w) * static_cast<std::size_t>(h));
-    const render_timing t = render_rows(h, "glint_scratches: rendering " + std::to_string(w) + "x" + std::to_string(h), [&](int y) {
-        for (int x = 0; x < w; ++x) {
-            const float fx = static_cast<float>(x) + 0.5f, fy = static_cast<float>(y) + 0.5f;
-            const vec3 d = cam.ray(fx, fy);
-            const hit ht = intersect(cam.eye, d);
-            vec3 L(0);
-            if (!ht.found) {
-                L = light == "env" ? env(d) : background(d);
-            } else {
-                vec2 duvdx, duvdy;
-                footprint_derivatives(cam, ht, fx, fy, duvdx, duvdy);
-                // Surface coordinates and the footprint's axes (sd sigma_pix = 1/2 pixel, as the
-                // P-NDF's), in scene units; a tangent-space frame whose u is the surface tangent.
-                vec2 p = ht.uv * to_surface, a = 0.5f * duvdx * to_surface, b = 0.5f * duvdy * to_surface;
-                vec3 tangent(1, 0, 0);
-                if (pattern == "turned" && !ht.sphere) {
-                    const auto q = glint::scratch_turned<float>(p, turn_centre);
-                    const auto qa = glint::scratch_turned<float>(p + a, turn_centre), qb = glint::scratch_turned<float>(p + b, turn_centre);
-                    a = qa.x - q.x, b = qb.x - q.x, p = q.x;
-                    tangent = vec3(q.tangent, 0);
-                }
-                const auto f = glint::make_scratch_frame<float>(vec3(0, 0, 1), tangent);
-                const vec3 wo = to_local(ht, -d);
-                const vec2 jitter(hash01(static_cast<std::uint32_t>(x), static_cast<std::uint32_t>(y), 1), hash01(static_cast<std::uint32_t>(x), static_cast<std::uint32_t>(y), 2));
-                if (wo.z > 0 && light == "point") {
-                    const vec3 dl = ls.position - ht.p;
-                    const vec3 wl = to_local(ht, glm::normalize(dl));
-                    const float E = ls.intensity / glm::dot(dl, dl);
-                    const auto lit = mview.light(f, p, a, b, wo, wl, E, static_cast<float>(1 * deg), 4, jitter);
-                    L = lit.radiance + vec3(lit.base_weight * base_brdf_cos(wl, wo) * wl.z * E);
-                    L += vec3(0.004f, 0.0036f, 0.0032f);  // a faint ambient so the surfaces read
-                } else if (wo.z > 0) {
-                    // Importance sampling of the SV-BRDF (RGB16 Sec. 5.1): the base or a layer per
-                    // sample by their Eq. 4 weights.
-                    const auto world = [&](const vec3& v) { return v.x * ht.t + v.y * ht.b + v.z * ht.n; };
-                    const auto areas = mview.areas(p, a, b, jitter);
-                    for (int s = 0; s < spp; ++s) {
-                        const std::uint32_t key = static_cast<std::uint32_t>(x + w * y);
-                        const float u0 = hash01(key, static_cast<std::uint32_t>(s), 3), u1 = hash01(key, static_cast<std::uint32_t>(s), 4), u2 = hash01(key, static_cast<std::uint32_t>(s), 5);
-                        const auto pick = mview.sample_with(f, areas, wo, u0, u1, u2);
-                        if (pick.layer >= 0) {
-                            if (pick.s.valid) L += pick.s.weight * env(world(pick.s.wi));
-                        } else {
-                            const vec3 m = glint::sample_vndf_ggx<float>(wo, vec2(base_alpha), u1, u2);
-                            const vec3 wi = glm::reflect(-wo, m);
-                            if (wi.z > 0) {
-                                const float g1 = glint::smith_g1(glint::ndf::ggx, wo, m, vec2(base_alpha));
-                                const float wgt = glint::fresnel_conductor(iron_eta, iron_k, glm::dot(wo, m)) * glint::smith_g2(glint::ndf::ggx, wi, wo, m, vec2(base_alpha)) / std::max(g1, 1e-6f);
-                                L += wgt * env(world(wi));
-                            }
-                        }
-                    }
-                    L /= static_cast<float>(spp);
-                }
-            }
-            const std::size_t i = 3 * (static_cast<std::size_t>(y) * static_cast<std::size_t>(w) + static_cast<std::size_t>(x));
-            rgb[i] = L.x, rgb[i + 1] = L.y, rgb[i + 2] = L.z;
+    std::vector<float> rgb;
+    const auto shade = [&](int x, int y, const vec3& d, const hit& ht, const vec2& duvdx, const vec2& duvdy) {
+        const vec3 wo = to_local(ht, -d);
+        if (!(wo.z > 0)) return vec3(0);
+        // Surface coordinates and the footprint's axes (sd sigma_pix = 1/2 pixel, as the P-NDF's),
+        // in scene units; a tangent-space frame whose u is the surface tangent.
+        vec2 p = ht.uv * to_surface, a = 0.5f * duvdx * to_surface, b = 0.5f * duvdy * to_surface;
+        vec3 tangent(1, 0, 0);
+        if (pattern == "turned" && !ht.sphere) {
+            const auto q = glint::scratch_turned<float>(p, turn_centre);
+            const auto qa = glint::scratch_turned<float>(p + a, turn_centre), qb = glint::scratch_turned<float>(p + b, turn_centre);
+            a = qa.x - q.x, b = qb.x - q.x, p = q.x;
+            tangent = vec3(q.tangent, 0);
         }
-    });
+        const auto f = glint::make_scratch_frame<float>(vec3(0, 0, 1), tangent);
+        const auto ux = static_cast<std::uint32_t>(x), uy = static_cast<std::uint32_t>(y), key = static_cast<std::uint32_t>(x + w * y);
+        const vec2 jitter(hash01(ux, uy, 1), hash01(ux, uy, 2));
+        if (light == "point") {
+            const vec3 dl = ls.position - ht.p;
+            const vec3 wl = to_local(ht, glm::normalize(dl));
+            const float E = ls.intensity / glm::dot(dl, dl);
+            const auto lit = mview.light(f, p, a, b, wo, wl, E, static_cast<float>(1 * deg), 4, jitter);
+            // A faint ambient so the surfaces read.
+            return lit.radiance + vec3(lit.base_weight * base_brdf_cos(wl, wo) * wl.z * E) + vec3(0.004f, 0.0036f, 0.0032f);
+        }
+        // Importance sampling of the SV-BRDF (RGB16 Sec. 5.1): the base or a layer per sample by
+        // their Eq. 4 weights; the base by GGX's visible normals.
+        const auto world = [&](const vec3& v) { return v.x * ht.t + v.y * ht.b + v.z * ht.n; };
+        const auto areas = mview.areas(p, a, b, jitter);
+        vec3 L(0);
+        for (int s = 0; s < spp; ++s) {
+            const auto si = static_cast<std::uint32_t>(s);
+            const float u0 = hash01(key, si, 3), u1 = hash01(key, si, 4), u2 = hash01(key, si, 5);
+            const auto pick = mview.sample_with(f, areas, wo, u0, u1, u2);
+            if (pick.layer >= 0) {
+                if (pick.s.valid) L += pick.s.weight * env(world(pick.s.wi));
+                continue;
+            }
+            const vec3 m = glint::sample_vndf_ggx<float>(wo, vec2(base_alpha), u1, u2);
+            const vec3 wi = glm::reflect(-wo, m);
+            if (!(wi.z > 0)) continue;
+            const float g1 = glint::smith_g1(glint::ndf::ggx, wo, m, vec2(base_alpha));
+            L += glint::fresnel_conductor(iron_eta, iron_k, glm::dot(wo, m)) * glint::smith_g2(glint::ndf::ggx, wi, wo, m, vec2(base_alpha)) / std::max(g1, 1e-6f) *
+                 env(world(wi));
+        }
+        return L / static_cast<float>(spp);
+    };
+    const auto miss = [&](const vec3& d) { return light == "env" ? env(d) : background(d); };
+    const render_timing t = render_scene(cam, "glint_scratches: rendering " + std::to_string(w) + "x" + std::to_string(h), rgb, shade, miss);
     std::fprintf(stderr, "\rglint_scratches: rendered %dx%d (%s, %s light, distance %.2f) in %.2f s on %u threads\n", w, h, pattern.c_str(), light.c_str(),
                  static_cast<double>(distance), t.seconds, t.threads);
     try {

@@ -117,14 +117,7 @@ section scratch_section(double min_time) {
           "| Fresnel | 0 | 15 | 30 | 45 | 60 | 75 |\n|---|---|---|---|---|---|---|\n";
     {
         const auto profile = glint::make_quartic_groove(0.5, 32);
-        struct model {
-            const char* name;
-            glint::scratch_fresnel f;
-        };
-        const model models[] = {{"Schlick F0 = 0.53", glint::scratch_fresnel::schlick(glm::dvec3(0.53))},
-                                {"Schlick F0 = 0.04", glint::scratch_fresnel::schlick(glm::dvec3(0.04))},
-                                {"iron, exact", glint::scratch_fresnel::iron()}};
-        for (const auto& m : models) {
+        for (const auto& m : glint_test::eq2_models()) {
             glint::scratch_table_options o;
             o.resolution = 32, o.rays_per_row = 100000;
             const auto t = glint::build_scratch_table(profile, m.f, o);

@@ -70,18 +70,24 @@ inline std::string scratch_number(double v) {
     return b;
 }
 
-inline void check_scratch_profile(const scratch_profile& p, const std::string& what) {
-    if (p.x.size() < 2 || p.x.size() != p.h.size())
-        throw error(what + "a profile needs at least 2 points and as many heights as x values (got " + std::to_string(p.x.size()) + " x, " +
-                    std::to_string(p.h.size()) + " h)");
-    for (std::size_t k = 0; k < p.x.size(); ++k) {
-        if (!std::isfinite(p.x[k]) || !std::isfinite(p.h[k]))
-            throw error(what + "point " + std::to_string(k) + " is not finite (x = " + scratch_number(p.x[k]) + ", h = " + scratch_number(p.h[k]) + ")");
-        if (k > 0 && !(p.x[k] > p.x[k - 1]))
-            throw error(what + "x is not strictly increasing at point " + std::to_string(k) + " (x = " + scratch_number(p.x[k - 1]) + " then " +
-                        scratch_number(p.x[k]) + ")");
-        if (p.h[k] > 0) throw error(what + "h = " + scratch_number(p.h[k]) + " > 0 at point " + std::to_string(k) + " (the base is at 0)");
+// Sizes, finiteness and x strictly increasing: the polyline itself.
+inline void check_scratch_points(const std::vector<double>& x, const std::vector<double>& h, const std::string& what) {
+    if (x.size() < 2 || x.size() != h.size())
+        throw error(what + "a profile needs at least 2 points and as many heights as x values (got " + std::to_string(x.size()) + " x, " +
+                    std::to_string(h.size()) + " h)");
+    for (std::size_t k = 0; k < x.size(); ++k) {
+        if (!std::isfinite(x[k]) || !std::isfinite(h[k]))
+            throw error(what + "point " + std::to_string(k) + " is not finite (x = " + scratch_number(x[k]) + ", h = " + scratch_number(h[k]) + ")");
+        if (k > 0 && !(x[k] > x[k - 1]))
+            throw error(what + "x is not strictly increasing at point " + std::to_string(k) + " (x = " + scratch_number(x[k - 1]) + " then " +
+                        scratch_number(x[k]) + ")");
     }
+}
+
+inline void check_scratch_profile(const scratch_profile& p, const std::string& what) {
+    check_scratch_points(p.x, p.h, what);
+    for (std::size_t k = 0; k < p.x.size(); ++k)
+        if (p.h[k] > 0) throw error(what + "h = " + scratch_number(p.h[k]) + " > 0 at point " + std::to_string(k) + " (the base is at 0)");
     if (std::fabs(p.x.front() + 0.5) > 1e-12 || std::fabs(p.x.back() - 0.5) > 1e-12)
         throw error(what + "x must span [-1/2, 1/2] (got [" + scratch_number(p.x.front()) + ", " + scratch_number(p.x.back()) + "])");
     if (!p.periodic && (p.h.front() != 0 || p.h.back() != 0))
@@ -155,15 +161,7 @@ inline scratch_profile make_ramp_profile(double facet_angle) {
 // glint::error naming the point and value otherwise.
 inline scratch_profile make_tabulated_profile(std::vector<double> x, std::vector<double> h, bool periodic = false) {
     const std::string what = "glint::make_tabulated_profile: ";
-    if (x.size() < 2 || x.size() != h.size())
-        throw error(what + "needs at least 2 points and as many heights as x values (got " + std::to_string(x.size()) + " x, " + std::to_string(h.size()) + " h)");
-    for (std::size_t k = 0; k < x.size(); ++k)
-        if (!std::isfinite(x[k]) || !std::isfinite(h[k]))
-            throw error(what + "point " + std::to_string(k) + " is not finite (x = " + detail::scratch_number(x[k]) + ", h = " + detail::scratch_number(h[k]) + ")");
-    for (std::size_t k = 1; k < x.size(); ++k)
-        if (!(x[k] > x[k - 1]))
-            throw error(what + "x is not strictly increasing at point " + std::to_string(k) + " (x = " + detail::scratch_number(x[k - 1]) + " then " +
-                        detail::scratch_number(x[k]) + ")");
+    detail::check_scratch_points(x, h, what);
     const double width = x.back() - x.front();
     const double x0 = x.front();
     for (std::size_t k = 0; k < x.size(); ++k) x[k] = (x[k] - x0) / width - 0.5, h[k] /= width;

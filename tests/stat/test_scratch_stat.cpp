@@ -34,7 +34,7 @@ namespace gt = glint::testing;
 const double pi = 3.14159265358979323846;
 const double deg = pi / 180;
 
-double rnd(std::uint32_t i, std::uint32_t j, std::uint32_t salt) { return (glint::pcg3d(glm::uvec3(i, j, salt)).x + 0.5) * 2.3283064365386962890625e-10; }
+double rnd(std::uint32_t i, std::uint32_t j, std::uint32_t salt) { return glint_test::scratch_rnd(i, j, salt); }
 
 glint::scratch_table table(const glint::scratch_profile& p, const glint::scratch_fresnel& f, int M, int N, bool sym, std::uint32_t seed = 0) {
     glint::scratch_table_options o;
@@ -172,15 +172,8 @@ TEST_CASE("scratch table against an independent 3D tracer: theta_o = -theta_i, s
     const int M = 32, N = 8000;
     const auto profile = glint::make_quartic_groove(0.5, 32);
     const double alpha = gt::sidak_alpha(0.01, 6);
-    struct model {
-        const char* name;
-        glint::scratch_fresnel f;
-    };
-    const model models[] = {{"Schlick F0 0.53", glint::scratch_fresnel::schlick(glm::dvec3(0.53))},
-                            {"Schlick F0 0.04", glint::scratch_fresnel::schlick(glm::dvec3(0.04))},
-                            {"iron (exact)", glint::scratch_fresnel::iron()}};
     double worst_theta = 0;
-    for (const auto& md : models) {
+    for (const auto& md : glint_test::eq2_models()) {
         const auto raw = table(profile, md.f, M, N, false, 11);
         const auto sym = table(profile, md.f, M, N, true, 11);
         const double thetas[] = {0, 60, 15, 30, 45, 75};
@@ -206,7 +199,7 @@ TEST_CASE("scratch table against an independent 3D tracer: theta_o = -theta_i, s
                 const auto r = ts.test();
                 MESSAGE(std::string(md.name) << ", theta " << th_deg << ": table vs 3D tracer chi2 " << r.statistic << " / " << r.degrees_of_freedom << ", p " << r.p_value);
                 CHECK_FALSE(r.rejects(alpha));
-                if (th_deg == 60 && std::string(md.name) == "Schlick F0 0.04") {
+                if (th_deg == 60 && std::string(md.name) == "Schlick F0 = 0.04") {
                     // The wrong slice (theta = 0's in place of pi/3's) is rejected.
                     for (std::size_t b = 0; b < ts.a.size(); ++b) {
                         const double count = raw.rho_m()[b] * N * glint::scratch_table::bin_ds(static_cast<int>(b) / M, M);

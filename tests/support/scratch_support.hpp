@@ -53,6 +53,18 @@ struct tracer3d {
     }
 };
 
+// The Fresnel models Eq. 2's error is measured for (RGB16 Sec. 4.2: Schlick for dielectrics, a
+// conductor; notes 1.4's table).
+struct eq2_model {
+    const char* name;
+    glint::scratch_fresnel f;
+};
+inline std::vector<eq2_model> eq2_models() {
+    return {{"Schlick F0 = 0.53", glint::scratch_fresnel::schlick(glm::dvec3(0.53))},
+            {"Schlick F0 = 0.04", glint::scratch_fresnel::schlick(glm::dvec3(0.04))},
+            {"iron, exact", glint::scratch_fresnel::iron()}};
+}
+
 // The tracer's table at elevation theta: rho[o][i] (and the sums of squared weights, for
 // variances) from N rays per incident bin entering at theta_i = -theta, x stratified, sin(phi_i)
 // uniform in the bin; channel 0 of the Fresnel. worst_theta: the largest |theta_o - theta| seen.

@@ -171,6 +171,17 @@ struct glint_scratch_sample {
     bool valid;
 };
 
+// No sample (weight 0): what the samplers return where nothing can be drawn.
+GLINT_FN glint_scratch_sample glint_scratch_no_sample(vec3 n) {
+    glint_scratch_sample r;
+    r.wi = n;
+    r.weight = vec3(real(0));
+    r.phi_i = real(0);
+    r.pdf_phi = real(0);
+    r.valid = false;
+    return r;
+}
+
 // The probability of picking row o1 among the view's rows: its filter weight, rows that reflect
 // nothing (albedo 0) left out. -1 where neither reflects.
 GLINT_FN real glint_scratch_row_choice(glint_scratch_rows r, real a0, real a1) {
@@ -193,12 +204,7 @@ GLINT_FN real glint_scratch_row_pdf(GLINT_SCRATCH_DATA_PARAM int M, int o, real 
 // pdf (the cosine cancels, as the paper notes; with one row, rho_s A_o / rho_m[o][i]). Invalid
 // (weight 0) for wo below the horizon or rows that reflect nothing.
 GLINT_FN glint_scratch_sample glint_scratch_sample_cone(GLINT_SCRATCH_DATA_PARAM glint_scratch_frame f, vec3 wo, real u1, real u2, int filter_mode) {
-    glint_scratch_sample r;
-    r.wi = f.n;
-    r.weight = vec3(real(0));
-    r.phi_i = real(0);
-    r.pdf_phi = real(0);
-    r.valid = false;
+    glint_scratch_sample r = glint_scratch_no_sample(f.n);
     int M = int(GLINT_SCRATCH_FETCH(0).x);
     if (M < 1 || !(dot(wo, f.n) > real(0))) return r;
     vec2 co = glint_scratch_to_cone(f, wo);
@@ -669,11 +675,7 @@ GLINT_FN glint_scratch_pick glint_scratch_material_sample_with(GLINT_SCRATCH_DAT
                                                                real u2, int filter_mode) {
     glint_scratch_pick r;
     r.layer = -1;
-    r.s.wi = f.n;
-    r.s.weight = vec3(real(0));
-    r.s.phi_i = real(0);
-    r.s.pdf_phi = real(0);
-    r.s.valid = false;
+    r.s = glint_scratch_no_sample(f.n);
     real t = clamp(u0, real(0), real(1)) - A.mix.base_weight;
     if (t < real(0)) return r;
     int last = -1;

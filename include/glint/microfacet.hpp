@@ -49,6 +49,8 @@ template <class real>
 using vec2_t = glm::vec<2, real, glm::defaultp>;
 template <class real>
 using vec3_t = glm::vec<3, real, glm::defaultp>;
+template <class real>
+using vec4_t = glm::vec<4, real, glm::defaultp>;
 
 namespace detail {
 template <class real>

@@ -6,10 +6,12 @@
 // namespace glint::detail::glsl, where GLM's functions are visible unqualified. This header
 // defines the macros the kernel text needs; kernel_end.hpp removes every one of them, so nothing
 // leaks into user code. No include guard: the pair is used once, by glint/detail/kernels.hpp.
+#include <cstddef>
 #include <cstdint>
 #include <type_traits>
 
 #include <glm/glm.hpp>
+#include <glm/gtc/type_ptr.hpp>
 
 namespace glint {
 namespace detail {
@@ -38,6 +40,12 @@ using namespace glm;  // NOLINT: confined to glint::detail::glsl
 #define GLINT_SCRATCH_DATA_PARAM const vec4* glint_scratch_data,
 #define GLINT_SCRATCH_DATA_ARG glint_scratch_data,
 #define GLINT_SCRATCH_FETCH(k) glint_scratch_data[k]
+// The NDF images of kernels/ndf_map.glsl: in C++ a float array (layer after layer, res x res
+// bins of four floats each, row-major), in GLSL a sampler2DArray read by texelFetch.
+#define GLINT_NDF_DATA_PARAM const float *glint_ndf_images,
+#define GLINT_NDF_DATA_ARG glint_ndf_images,
+#define GLINT_NDF_FETCH(layer, x, y, res) \
+    vec4(::glm::make_vec4(glint_ndf_images + 4 * ((static_cast<std::ptrdiff_t>(layer) * (res) + (y)) * (res) + (x))))
 // A named constant (in GLSL: `const T`).
 #define GLINT_CONST(T) static constexpr T
 // A constant table of n floats (n a multiple of 4), written GLINT_FLOAT_TABLE(name, n)

@@ -24,6 +24,7 @@ struct kernels {
 #include "glint/kernels/ibl.glsl"
 #include "glint/kernels/gaussian.glsl"
 #include "glint/kernels/scratch.glsl"
+#include "glint/kernels/ndf_map.glsl"
 };
 
 }  // namespace glsl

@@ -19,6 +19,8 @@
 #define GLINT_ELEMENT_DATA_ARG
 #define GLINT_SCRATCH_DATA_PARAM
 #define GLINT_SCRATCH_DATA_ARG
+#define GLINT_NDF_DATA_PARAM
+#define GLINT_NDF_DATA_ARG
 // True in the C++ double instantiation; GLSL computes in float.
 const bool GLINT_DOUBLE = false;
 #endif

@@ -50,6 +50,7 @@ struct gl_compute::impl {
     PFNGLACTIVETEXTUREPROC ActiveTexture = nullptr;
     PFNGLTEXIMAGE2DPROC TexImage2D = nullptr;
     PFNGLTEXPARAMETERIPROC TexParameteri = nullptr;
+    PFNGLTEXIMAGE3DPROC TexImage3D = nullptr;
     std::vector<unsigned> programs;
 
     template <class F>
@@ -126,6 +127,7 @@ gl_compute::gl_compute() : impl_(new impl) {
     g.load(g.BindTexture, "glBindTexture");
     g.load(g.ActiveTexture, "glActiveTexture");
     g.load(g.TexImage2D, "glTexImage2D");
+    g.load(g.TexImage3D, "glTexImage3D");
     g.load(g.TexParameteri, "glTexParameteri");
 }
 
@@ -143,6 +145,22 @@ unsigned gl_compute::texture_rgba32f(int width, int height, const std::vector<fl
     g.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_REPEAT);
     g.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
     if (g.GetError() != GL_NO_ERROR) throw std::runtime_error("gl_compute: creating the texture failed");
+    return tex;
+}
+
+unsigned gl_compute::texture_array_rgba32f(int width, int height, int layers, const std::vector<float>& rgba) {
+    impl& g = *impl_;
+    if (rgba.size() != 4 * static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * static_cast<std::size_t>(layers))
+        throw std::runtime_error("gl_compute: texture array data size does not match " + std::to_string(width) + " x " + std::to_string(height) + " x " +
+                                 std::to_string(layers));
+    GLuint tex = 0;
+    g.GenTextures(1, &tex);
+    g.ActiveTexture(GL_TEXTURE0);
+    g.BindTexture(GL_TEXTURE_2D_ARRAY, tex);
+    g.TexImage3D(GL_TEXTURE_2D_ARRAY, 0, GL_RGBA32F, width, height, layers, 0, GL_RGBA, GL_FLOAT, rgba.data());
+    g.TexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    g.TexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    if (g.GetError() != GL_NO_ERROR) throw std::runtime_error("gl_compute: creating the texture array failed");
     return tex;
 }
 

@@ -38,6 +38,9 @@ public:
     // GL_CLAMP_TO_EDGE in t (an equirectangular environment map); rows bottom to top as GL
     // addresses them (row y at t = (y + 1/2) / height). Returns its name.
     unsigned texture_rgba32f(int width, int height, const std::vector<float>& rgba);
+    // An RGBA32F 2D array texture on unit 0 (layer after layer, rows bottom to top), GL_NEAREST:
+    // shaders read it with texelFetch.
+    unsigned texture_array_rgba32f(int width, int height, int layers, const std::vector<float>& rgba);
     void delete_texture(unsigned texture);
 
     struct impl;

@@ -89,3 +89,12 @@ constexpr double PNDF_GLSL_MAX_MISMATCH_RATE = 0.0;
 // (worst 2.6e-3, at the kernel's edge where its weight is near 0), no light-cull flip in 20000.
 constexpr double SCRATCH_CONE_GLSL_MAX_ABSOLUTE = 1e-5;
 constexpr double SCRATCH_GLSL_MAX_FLIP_RATE = 1e-3;
+// NDF maps (test_ndf_map_parity.cpp). The P-NDF is a normalised sum of bilinear lookups weighted
+// by exp of Mahalanobis distances (GLSL's exp: (3 + 2|x|) ulp, 1.1e-5 at the taper's edge), plus
+// the element path's terms (GAUSSIAN_GLSL_MAX_RELATIVE): differences of a few 1e-5 of the map's
+// peak density, so 1e-4 of the peak. Decisions (a tile centre's owner, a level's floor, the hard
+// tile cap) take the same branches but for inputs within rounding of a boundary, where a value or
+// a draw may change: the share beyond 1e-3 of the peak (or a draw moved by more than 1e-4 in s)
+// is bounded by 1e-3.
+constexpr double NDF_MAP_GLSL_MAX_DIFFERENCE = 1e-4;
+constexpr double NDF_MAP_GLSL_MAX_MISMATCH_RATE = 1e-3;

@@ -7,6 +7,14 @@
 //   glint_microstructure [--pattern brushed|noise|flakes|scratches|leather | --normal-map PATH]
 //                        [--texels-per-unit T] [--sigma-r S] [--light point|env] [--env PATH.exr]
 //                        [--close] [--size WxH] [--out PATH.exr]
+//                        [--example-size N [--ndf-map] [--placement tiled|stochastic] [--cell C]
+//                         [--rotation MIN,MAX] [--scale MIN,MAX] [--flip P]]
+//
+// With --example-size the surface is covered by copies of an N x N example of the pattern
+// (XTXW24's tiny example): tiled, or one randomly rotated, scaled and mirrored copy per cell of C
+// texels (degrees for --rotation). --ndf-map shades it with the example's NDF maps
+// (glint/ndf_map.hpp); without it, with the direct P-NDF of the same layout (the example's
+// element hierarchy when tiled, the element path of every copy when stochastic), for comparison.
 //
 // The environment is lit as 64 directional lights drawn once from its luminance (the same for
 // every pixel, each weighted by radiance / pdf): an estimate of the environment integral that
@@ -22,6 +30,7 @@
 #include <vector>
 
 #include <glint/gaussian.hpp>
+#include <glint/ndf_map.hpp>
 #include <glint/io/exr.hpp>
 #include <glint/io/normal_map.hpp>
 #include <glint/patterns.hpp>
@@ -39,7 +48,9 @@ namespace {
                  "glint_microstructure: %s\n"
                  "usage: glint_microstructure [--pattern brushed|noise|flakes|scratches|leather | --normal-map PATH]\n"
                  "                            [--texels-per-unit T] [--sigma-r S] [--light point|env] [--env PATH.exr]\n"
-                 "                            [--close] [--size WxH] [--out PATH.exr]\n",
+                 "                            [--close] [--size WxH] [--out PATH.exr]\n"
+                 "                            [--example-size N [--ndf-map] [--placement tiled|stochastic] [--cell C]\n"
+                 "                             [--rotation MIN,MAX] [--scale MIN,MAX] [--flip P]]\n",
                  problem.c_str());
     std::exit(2);
 }
@@ -80,13 +91,24 @@ std::vector<directional> environment_lights(const glint::io::rgb_image& img, int
     return lights;
 }
 
+// "A,B" as two numbers in [lo, hi] with A <= B; otherwise usage().
+void parse_range(const std::string& flag, const std::string& v, float lo, float hi, float& a, float& b) {
+    const std::size_t comma = v.find(',');
+    if (comma == std::string::npos) usage(flag + " needs MIN,MAX, got '" + v + "'");
+    a = parse_float(flag, v.substr(0, comma), lo, hi, usage);
+    b = parse_float(flag, v.substr(comma + 1), lo, hi, usage);
+    if (a > b) usage(flag + " needs MIN <= MAX, got '" + v + "'");
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
     std::string pattern = "brushed", map_path, light = "point", env_path = std::string(GLINT_DATA_DIR) + "/envmaps/studio.exr", out = "glint_microstructure.exr";
     float texels_per_unit = 600.0f, sigma_r = 0.01f;
-    bool close = false;
-    int w = 640, h = 400;
+    bool close = false, use_map = false;
+    int w = 640, h = 400, example_size = 0;
+    std::string placement_kind = "tiled";
+    float cell = 0, rot0 = 0, rot1 = 360, scale0 = 0.8f, scale1 = 1.25f, flip = 0.5f;
     for (int i = 1; i < argc; ++i) {
         const std::string a = argv[i];
         auto value = [&] { return flag_value(argc, argv, i, usage); };
@@ -101,9 +123,22 @@ int main(int argc, char** argv) {
         else if (a == "--close") close = true;
         else if (a == "--size") parse_size(a, value(), w, h, usage);
         else if (a == "--out") out = parse_exr_path(a, value(), usage);
+        else if (a == "--example-size") {
+            example_size = static_cast<int>(parse_float(a, value(), 4, 256, usage));
+            if ((example_size & (example_size - 1)) != 0) usage("--example-size must be a power of two in [4, 256]");
+        } else if (a == "--ndf-map") use_map = true;
+        else if (a == "--placement") {
+            placement_kind = value();
+            if (placement_kind != "tiled" && placement_kind != "stochastic") usage("--placement must be tiled or stochastic, got '" + placement_kind + "'");
+        } else if (a == "--cell") cell = parse_float(a, value(), 1, 1e5f, usage);
+        else if (a == "--rotation") parse_range(a, value(), -3600, 3600, rot0, rot1);
+        else if (a == "--scale") parse_range(a, value(), 0.01f, 100, scale0, scale1);
+        else if (a == "--flip") flip = parse_float(a, value(), 0, 1, usage);
         else if (a == "--help" || a == "-h") usage("renders normal-mapped microstructure");
         else usage("unknown argument '" + a + "'");
     }
+    if (use_map && example_size == 0) usage("--ndf-map needs --example-size");
+    if (example_size == 0 && (placement_kind != "tiled" || cell > 0)) usage("--placement and --cell need --example-size");
     glint::normal_map map;
     std::vector<directional> env_lights;
     try {
@@ -112,10 +147,11 @@ int main(int argc, char** argv) {
         } else {
             glint::pattern_params p;
             p.kind = glint::parse_pattern(pattern);
-            p.width = p.height = 256;
+            p.width = p.height = example_size > 0 ? example_size : 256;
             p.seed = 3;
             p.slope_rms = p.kind == glint::pattern::flakes ? 0.12 : p.kind == glint::pattern::scratches ? 0.1 : 0.15;
             p.feature = p.kind == glint::pattern::leather ? 24 : 10;
+            if (example_size > 0) p.feature = std::min(p.feature, example_size / (p.kind == glint::pattern::leather ? 2.5 : 5.0));
             map = glint::make_normal_map(p);
         }
         if (light == "env") env_lights = environment_lights(glint::io::read_exr(env_path), 64);
@@ -123,13 +159,42 @@ int main(int argc, char** argv) {
         std::fprintf(stderr, "glint_microstructure: %s\n", e.what());
         return 1;
     }
+    // The shading's P-NDF: the direct one of the whole map (or of the tiled example), the NDF map,
+    // or the element path of a stochastic layout.
+    const bool stochastic = placement_kind == "stochastic";
+    const auto t0 = std::chrono::steady_clock::now();
     glint::gaussian_params<float> g;
     g.sigma_r = sigma_r;
-    const auto t0 = std::chrono::steady_clock::now();
-    const auto pndf = glint::gaussian_pndf<float>::build(map, g);
-    std::fprintf(stderr, "glint_microstructure: %d x %d map, %zu elements, hierarchy %d^2 finest cells, %.1f MB, built in %.2f s\n", map.width(), map.height(),
-                 pndf.element_count(), pndf.grid_size(), static_cast<double>(pndf.memory_bytes()) / 1e6,
-                 std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+    glint::gaussian_pndf<float> pndf;
+    glint::ndf_map<float> ndf;
+    glint::ndf_placement<float> layout = glint::ndf_placement<float>::tiled();
+    try {
+        if (example_size > 0 && (use_map || stochastic)) {
+            glint::ndf_map_params mp;
+            mp.sigma_r = sigma_r;
+            ndf = glint::ndf_map<float>::build(map, mp);
+            if (stochastic)
+                layout = glint::ndf_placement<float>::stochastic(cell > 0 ? cell : static_cast<float>(example_size), 7u,
+                                                                 glm::vec2(rot0, rot1) * 0.017453292f, glm::vec2(scale0, scale1), flip);
+            std::fprintf(stderr, "glint_microstructure: %d x %d example, %d levels, %d^2 bins per tile, %.1f MB of images, built in %.2f s\n", example_size,
+                         example_size, ndf.levels(), ndf.resolution(), static_cast<double>(ndf.image_bytes()) / 1e6, ndf.build_seconds());
+        } else {
+            pndf = glint::gaussian_pndf<float>::build(map, g);
+            std::fprintf(stderr, "glint_microstructure: %d x %d map, %zu elements, hierarchy %d^2 finest cells, %.1f MB, built in %.2f s\n", map.width(),
+                         map.height(), pndf.element_count(), pndf.grid_size(), static_cast<double>(pndf.memory_bytes()) / 1e6,
+                         std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+        }
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "glint_microstructure: %s\n", e.what());
+        return 1;
+    }
+    const bool by_map = example_size > 0 && use_map, by_elements = example_size > 0 && stochastic && !use_map;
+    const float alpha_g = by_map || by_elements ? ndf.alpha_g() : pndf.alpha_g();
+    const auto pndf_at = [&](const glint::texel_footprint<float>& fp, const glm::vec2& s) {
+        if (by_map) return ndf.eval(layout, fp, s);
+        if (by_elements) return ndf.eval_direct(layout, fp, s);
+        return pndf.eval(fp, s);
+    };
     const camera cam = close ? camera(w, h, vec3(0.45f, 1.05f, 1.5f), vec3(0.1f, 0.7f, 0.3f)) : camera(w, h);
     const light_setup ls{light_type::point};
     const float tex_per_uv = texels_per_unit / uv_per_unit;
@@ -141,7 +206,15 @@ int main(int argc, char** argv) {
         const auto add = [&](const vec3& wi_world, const vec3& radiance) {
             const vec3 wi = to_local(ht, wi_world);
             if (!(wi.z > 0) || !(wo.z > 0)) return;
-            for (int c = 0; c < 3; ++c) L[c] += pndf.brdf(fp, wi, wo, silver_eta[c], silver_k[c]) * wi.z * radiance[c];
+            const vec3 hv = glm::normalize(wi + wo);
+            if (!(hv.z > 0)) return;
+            // One P-NDF value per light; the Fresnel term per channel (XTXW24 Eq. 1).
+            const float dp = pndf_at(fp, glm::vec2(hv.x, hv.y));
+            if (!(dp > 0)) return;
+            for (int c = 0; c < 3; ++c)
+                L[c] += glint::detail::glsl::kernels<float>::glint_pndf_brdf(dp, wi, wo, static_cast<int>(glint::ndf::beckmann), glm::vec2(alpha_g), silver_eta[c],
+                                                                             silver_k[c]) *
+                        wi.z * radiance[c];
         };
         if (light == "point") {
             const vec3 dl = ls.position - ht.p;

@@ -194,6 +194,11 @@ public:
     real eval(const placement& pl, const texel_footprint<real>& fp, const vec2& s) const {
         return kernels::glint_ndf_pndf(element_data().data(), images_.data(), k_, pl.k, fp.center, covariance(fp), s);
     }
+    // D_P(s) with XTXW24's tiles as published: each tile's NDF alone (Eq. 7), without glint's
+    // first-order moments (for comparison; sample() draws from this density).
+    real eval_zero_order(const placement& pl, const texel_footprint<real>& fp, const vec2& s) const {
+        return kernels::glint_ndf_pndf_mode(element_data().data(), images_.data(), k_, pl.k, fp.center, covariance(fp), s, kernels::GLINT_NDF_DENSITY);
+    }
     // The element path for every footprint (Eq. 6 summed over each copy's owned elements, no
     // lattice cap): the layout's P-NDF the map approximates.
     real eval_direct(const placement& pl, const texel_footprint<real>& fp, const vec2& s) const {
@@ -206,8 +211,9 @@ public:
     }
     // The density of sample()'s s: the zero-order P-NDF (tiles' B alone) over mass; positive
     // wherever eval is.
-    real pdf(const placement& pl, const texel_footprint<real>& fp, const vec2& s) const {
-        const real m = mass(pl, fp);
+    real pdf(const placement& pl, const texel_footprint<real>& fp, const vec2& s) const { return pdf(pl, fp, s, mass(pl, fp)); }
+    // The same with mass(pl, fp) given (callers evaluating many s for one footprint).
+    real pdf(const placement& pl, const texel_footprint<real>& fp, const vec2& s, real m) const {
         if (!(m > 0)) return real(0);
         return kernels::glint_ndf_pndf_mode(element_data().data(), images_.data(), k_, pl.k, fp.center, covariance(fp), s, kernels::GLINT_NDF_DENSITY) / m;
     }

@@ -241,6 +241,66 @@ GLINT_FN glint_ndf_copy glint_ndf_tiled_copy(glint_ndf_placement pl) {
     return glint_ndf_make_copy(pl.origin, vec2(real(0)), pl.a, ivec2(0));
 }
 
+// The anchors that can compete with copy c's for a point it might own (within
+// GLINT_NDF_OWNER_REACH cells of its anchor, so in the 5 x 5 cells around its own): a point's owner
+// is among the 3 x 3 cells around the point's cell, all inside those. `before`: whether the cell
+// comes first in row order (it wins a tie, as in glint_ndf_owner). `inner`: points nearer the
+// anchor than 0.49 of the nearest other are the copy's without a search.
+struct glint_ndf_rivals {
+    vec2 q[24];
+    bool before[24];
+    real inner;
+};
+
+GLINT_FN glint_ndf_rivals glint_ndf_make_rivals(glint_ndf_placement pl, glint_ndf_copy c) {
+    glint_ndf_rivals r;
+    int k = 0;
+    real d2 = real(3.4e38);
+    for (int j = -2; j <= 2; ++j)
+        for (int i = -2; i <= 2; ++i) {
+            if (i == 0 && j == 0) continue;
+            r.q[k] = glint_ndf_cell_anchor(pl, c.cell + ivec2(i, j));
+            r.before[k] = j < 0 || (j == 0 && i < 0);
+            vec2 d = r.q[k] - c.anchor;
+            d2 = min(d2, dot(d, d));
+            k += 1;
+        }
+    r.inner = real(0.2401) * d2;
+    return r;
+}
+
+// Rivals for a tiled copy (never consulted: it owns everything).
+GLINT_FN glint_ndf_rivals glint_ndf_no_rivals() {
+    glint_ndf_rivals r;
+    for (int k = 0; k < 24; ++k) {
+        r.q[k] = vec2(real(0));
+        r.before[k] = false;
+    }
+    r.inner = real(3.4e38);
+    return r;
+}
+
+// Whether copy c owns the surface point x, exactly as glint_ndf_owner decides (the same squared
+// distances, the same ties), but without hashing: certain within the inner radius, impossible
+// beyond the reach, else against the rivals.
+GLINT_FN bool glint_ndf_copy_owns(glint_ndf_placement pl, glint_ndf_copy c, glint_ndf_rivals r, vec2 x) {
+    vec2 e = x - c.anchor;
+    real r2 = dot(e, e);
+    if (r2 <= r.inner) return true;
+    real reach = GLINT_NDF_OWNER_REACH * pl.cell;
+    if (r2 > reach * reach) return false;
+    GLINT_PRECISE real ex = x.x - c.anchor.x;
+    GLINT_PRECISE real ey = x.y - c.anchor.y;
+    GLINT_PRECISE real own = ex * ex + ey * ey;
+    for (int k = 0; k < 24; ++k) {
+        GLINT_PRECISE real dx = x.x - r.q[k].x;
+        GLINT_PRECISE real dy = x.y - r.q[k].y;
+        GLINT_PRECISE real d = dx * dx + dy * dy;
+        if (d < own || (d == own && r.before[k])) return false;
+    }
+    return true;
+}
+
 // ---------------------------------------------------------------------------------------------
 // Level of detail.
 
@@ -326,7 +386,7 @@ GLINT_FN real glint_ndf_running_mass(GLINT_NDF_DATA_PARAM glint_ndf_map_params p
 // centre's Mahalanobis distance squared. Rows are clipped to the ellipse, so the cost follows the
 // tiles in it; at most p.max_tiles tiles.
 GLINT_FN glint_ndf_sum glint_ndf_level_sum(GLINT_NDF_DATA_PARAM glint_ndf_map_params p, glint_ndf_placement pl, glint_ndf_copy c, bool owned,
-                                           vec4 box, int l, real factor, vec2 mu, vec4 cov, vec2 s_ex, real jac, int mode, glint_ndf_sum acc) {
+                                           glint_ndf_rivals rv, vec4 box, int l, real factor, vec2 mu, vec4 cov, vec2 s_ex, real jac, int mode, glint_ndf_sum acc) {
     real t = real(1 << (l + 1));
     int m = p.n >> (l + 1);
     int first = glint_ndf_level_first(p.n, l);
@@ -367,10 +427,7 @@ GLINT_FN glint_ndf_sum glint_ndf_level_sum(GLINT_NDF_DATA_PARAM glint_ndf_map_pa
         int tx1 = glint_ndf_index(floor(x1 / t - real(0.5)));
         for (int tx = tx0; tx <= tx1 && acc.tiles < p.max_tiles; ++tx) {
             vec2 centre = (vec2(real(tx), real(ty)) + vec2(real(0.5))) * t;
-            if (owned) {
-                ivec2 o = glint_ndf_owner(pl, c.anchor + glint_ndf_mul(c.a, centre - c.offset));
-                if (o.x != c.cell.x || o.y != c.cell.y) continue;
-            }
+            if (owned && !glint_ndf_copy_owns(pl, c, rv, c.anchor + glint_ndf_mul(c.a, centre - c.offset))) continue;
             vec2 d = centre - mu;
             real q = qxx * d.x * d.x + real(2) * qxy * d.x * d.y + qyy * d.y * d.y;
             real w = norm * exp(real(-0.5) * q) * glint_pndf_window(q, p.cull);
@@ -409,7 +466,7 @@ GLINT_FN glint_ndf_sum glint_ndf_level_sum(GLINT_NDF_DATA_PARAM glint_ndf_map_pa
 // factor jac: Eq. 6 on the example's elements. EVAL adds the P-NDF to num; MASS and SELECT add the
 // elements' weights to mass (each term integrates to its weight).
 GLINT_FN glint_ndf_sum glint_ndf_element_sum(GLINT_ELEMENT_DATA_PARAM glint_ndf_map_params p, glint_ndf_placement pl, glint_ndf_copy c, bool owned,
-                                             vec4 box, real factor, vec2 mu, vec4 cov, vec2 s_ex, real jac, int mode, glint_ndf_sum acc) {
+                                             glint_ndf_rivals rv, vec4 box, real factor, vec2 mu, vec4 cov, vec2 s_ex, real jac, int mode, glint_ndf_sum acc) {
     glint_pndf_params e = p.el;
     glint_pndf_frame f = glint_pndf_prepare(mu, cov, e.sigma_h, e.cull_u, e.cull_s);
     real x0 = f.mean.x - f.extent.x;
@@ -428,10 +485,7 @@ GLINT_FN glint_ndf_sum glint_ndf_element_sum(GLINT_ELEMENT_DATA_PARAM glint_ndf_
         int wj = glint_pndf_wrap(j, e.height);
         for (int i = rx.x; i <= rx.y; ++i) {
             vec2 u_i = vec2((real(i) + real(0.5)) * e.spacing, (real(j) + real(0.5)) * e.spacing);
-            if (owned) {
-                ivec2 o = glint_ndf_owner(pl, c.anchor + glint_ndf_mul(c.a, u_i - c.offset));
-                if (o.x != c.cell.x || o.y != c.cell.y) continue;
-            }
+            if (owned && !glint_ndf_copy_owns(pl, c, rv, c.anchor + glint_ndf_mul(c.a, u_i - c.offset))) continue;
             int index = glint_pndf_wrap(i, e.width) + e.width * wj;
             acc.tiles += 1;
             // Owned elements are not a lattice: their weights sum to 1 only on average, so the
@@ -465,6 +519,7 @@ struct glint_ndf_plan {
     real alpha;    // the coarser one's share
     real whole;    // stochastic: the share of whole copies (footprints of a quarter to half a cell)
     ivec4 cells;   // stochastic: the cells whose copies can own part of the footprint (x0, y0, x1, y1)
+    vec2 ext;      // stochastic: the culling box's half-extent (global texels)
 };
 
 // The reference copy's example-frame covariance: A0's (tiled) or, stochastic, A0 at the largest
@@ -509,13 +564,19 @@ GLINT_FN glint_ndf_plan glint_ndf_make_plan(glint_ndf_map_params p, glint_ndf_pl
     if (fl >= real(0) && r.level < top) r.alpha = clamp((lv - fl - (real(1) - p.blend)) / p.blend, real(0), real(1));
     r.whole = real(0);
     r.cells = ivec4(0);
+    r.ext = vec2(real(0));
     if (pl.kind == GLINT_NDF_STOCHASTIC) {
         real g = sqrt(glint_ndf_eigenvalues(r.cov).y);
         real q = real(0.25) * pl.cell;
         r.whole = clamp((g - q) / q, real(0), real(1));
         vec2 ext = vec2(cull) * sqrt(vec2(r.cov.x, r.cov.z) + vec2(pl.cell * pl.cell / real(12)));
-        r.cells = ivec4(glint_ndf_index(floor((r.mu.x - ext.x) / pl.cell)) - 1, glint_ndf_index(floor((r.mu.y - ext.y) / pl.cell)) - 1,
-                        glint_ndf_index(floor((r.mu.x + ext.x) / pl.cell)) + 1, glint_ndf_index(floor((r.mu.y + ext.y) / pl.cell)) + 1);
+        r.ext = ext;
+        // Anchors lie in their cells' central half; one can own points of the box only within
+        // GLINT_NDF_OWNER_REACH cells of it: cells j with (j + 3/4) c >= lo - reach, (j + 1/4) c <= hi + reach.
+        real reach = GLINT_NDF_OWNER_REACH + real(0.75);
+        r.cells = ivec4(glint_ndf_index(ceil((r.mu.x - ext.x) / pl.cell - reach)), glint_ndf_index(ceil((r.mu.y - ext.y) / pl.cell - reach)),
+                        glint_ndf_index(floor((r.mu.x + ext.x) / pl.cell + reach - real(0.5))),
+                        glint_ndf_index(floor((r.mu.y + ext.y) / pl.cell + reach - real(0.5))));
     }
     return r;
 }
@@ -568,8 +629,10 @@ GLINT_FN glint_ndf_parts glint_ndf_copy_parts(GLINT_ELEMENT_DATA_PARAM GLINT_NDF
     glint_ndf_local lc = glint_ndf_localize(p, pl, c, plan.mu, plan.cov);
     bool tiles = plan.direct < real(1) && plan.whole < real(1);
     int top = p.levels - 1;
+    bool searched = owned && (plan.direct > real(0) || tiles);
+    glint_ndf_rivals rv = searched ? glint_ndf_make_rivals(pl, c) : glint_ndf_no_rivals();
     if (plan.direct > real(0) && (select < 0 || select == 0))
-        a.direct = glint_ndf_element_sum(GLINT_ELEMENT_DATA_ARG p, pl, c, owned, lc.box, real(1), lc.mu, lc.cov, s_ex, se.z, mode, a.direct);
+        a.direct = glint_ndf_element_sum(GLINT_ELEMENT_DATA_ARG p, pl, c, owned, rv, lc.box, real(1), lc.mu, lc.cov, s_ex, se.z, mode, a.direct);
     if (tiles && (select < 0 || select == 1)) {
         if (!owned && plan.level == top) {
             // One tiled example under the whole footprint: every top tile is the same image.
@@ -579,7 +642,7 @@ GLINT_FN glint_ndf_parts glint_ndf_copy_parts(GLINT_ELEMENT_DATA_PARAM GLINT_NDF
             else a.fine.mass = glint_ndf_tile_mass(GLINT_NDF_DATA_ARG p, layer);
             if (mode == GLINT_NDF_SELECT) a.fine.found = true, a.fine.layer = layer, a.fine.cell = c.cell;
         } else {
-            a.fine = glint_ndf_level_sum(GLINT_NDF_DATA_ARG p, pl, c, owned, lc.box, plan.level, real(1), lc.mu, lc.cov, s_ex, se.z, mode, a.fine);
+            a.fine = glint_ndf_level_sum(GLINT_NDF_DATA_ARG p, pl, c, owned, rv, lc.box, plan.level, real(1), lc.mu, lc.cov, s_ex, se.z, mode, a.fine);
         }
     }
     if (tiles && plan.alpha > real(0) && (select < 0 || select == 2)) {
@@ -590,7 +653,7 @@ GLINT_FN glint_ndf_parts glint_ndf_copy_parts(GLINT_ELEMENT_DATA_PARAM GLINT_NDF
             else a.coarse.mass = glint_ndf_tile_mass(GLINT_NDF_DATA_ARG p, layer);
             if (mode == GLINT_NDF_SELECT) a.coarse.found = true, a.coarse.layer = layer, a.coarse.cell = c.cell;
         } else {
-            a.coarse = glint_ndf_level_sum(GLINT_NDF_DATA_ARG p, pl, c, owned, lc.box, plan.level + 1, real(1), lc.mu, lc.cov, s_ex, se.z, mode, a.coarse);
+            a.coarse = glint_ndf_level_sum(GLINT_NDF_DATA_ARG p, pl, c, owned, rv, lc.box, plan.level + 1, real(1), lc.mu, lc.cov, s_ex, se.z, mode, a.coarse);
         }
     }
     if (owned && plan.direct < real(1) && plan.whole > real(0) && (select < 0 || select == 3)) {
@@ -617,9 +680,14 @@ GLINT_FN glint_ndf_parts glint_ndf_all_parts(GLINT_ELEMENT_DATA_PARAM GLINT_NDF_
                                              glint_ndf_plan plan, vec2 s, int mode, int select, glint_ndf_parts a) {
     if (pl.kind == GLINT_NDF_TILED)
         return glint_ndf_copy_parts(GLINT_ELEMENT_DATA_ARG GLINT_NDF_DATA_ARG p, pl, plan, glint_ndf_tiled_copy(pl), s, mode, select, a);
+    real reach = GLINT_NDF_OWNER_REACH * pl.cell;
     for (int cy = plan.cells.y; cy <= plan.cells.w; ++cy)
-        for (int cx = plan.cells.x; cx <= plan.cells.z; ++cx)
+        for (int cx = plan.cells.x; cx <= plan.cells.z; ++cx) {
+            // Whole copies weigh every anchor; the other parts only those whose reach meets the box.
+            vec2 d = abs(glint_ndf_cell_anchor(pl, ivec2(cx, cy)) - plan.mu);
+            if (plan.whole == real(0) && (d.x > plan.ext.x + reach || d.y > plan.ext.y + reach)) continue;
             a = glint_ndf_copy_parts(GLINT_ELEMENT_DATA_ARG GLINT_NDF_DATA_ARG p, pl, plan, glint_ndf_cell_copy(pl, ivec2(cx, cy), p.n), s, mode, select, a);
+        }
     return a;
 }
 

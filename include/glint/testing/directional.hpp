@@ -86,8 +86,10 @@ double adaptive(const F& f, double t0, double t1, double p0, double p1, double w
 // The probability of each of the t_cells x phi_cells cells under `density` (a density per unit
 // measure of the domain, evaluated at domain points (x, y) for the disk, (x, y, z) for the
 // hemisphere), integrated adaptively to 1e-4 relative or 1e-8 absolute (below what 1e6
-// samples resolve): each cell split at least once (8 x 8 Gauss-Legendre points), at most 4 times.
-inline std::vector<double> cell_probabilities(domain d, int t_cells, int phi_cells, const std::function<double(const glm::dvec3&)>& density) {
+// samples resolve): each cell split at least once (8 x 8 Gauss-Legendre points), at most `depth`
+// times (4; a density with kinks, such as a bilinear table, converges only as the square of the
+// split and would reach the depth in every cell: a caller may pass less, stating the error).
+inline std::vector<double> cell_probabilities(domain d, int t_cells, int phi_cells, const std::function<double(const glm::dvec3&)>& density, int depth = 4) {
     if (t_cells < 1 || phi_cells < 1) throw std::invalid_argument("glint::testing::cell_probabilities: no cells");
     std::vector<double> p;
     p.reserve(static_cast<std::size_t>(t_cells) * static_cast<std::size_t>(phi_cells));
@@ -98,7 +100,7 @@ inline std::vector<double> cell_probabilities(domain d, int t_cells, int phi_cel
             const double t0 = static_cast<double>(i) / t_cells, t1 = static_cast<double>(i + 1) / t_cells;
             const double p0 = detail::two_pi() * j / phi_cells, p1 = detail::two_pi() * (j + 1) / phi_cells;
             const double whole = detail::gauss_4x4(f, t0, t1, p0, p1);
-            p.push_back(detail::adaptive(f, t0, t1, p0, p1, whole, 1e-4, 1e-8, 4, 1));
+            p.push_back(detail::adaptive(f, t0, t1, p0, p1, whole, 1e-4, 1e-8, depth, 1));
         }
     return p;
 }
@@ -115,9 +117,10 @@ inline int cell_of(domain d, int t_cells, int phi_cells, const glm::dvec3& v) {
 
 // The test of `samples` (domain points; failed draws counted in `failures`) against `density`.
 inline directional_result directional_chi_square(domain d, int t_cells, int phi_cells, const std::function<double(const glm::dvec3&)>& density,
-                                                 const std::vector<glm::dvec3>& samples, std::size_t failures, double min_expected = 5.0) {
+                                                 const std::vector<glm::dvec3>& samples, std::size_t failures, double min_expected = 5.0,
+                                                 int depth = 4) {
     directional_result r;
-    r.expected_probability = cell_probabilities(d, t_cells, phi_cells, density);
+    r.expected_probability = cell_probabilities(d, t_cells, phi_cells, density, depth);
     for (const double p : r.expected_probability) r.integral += p;
     if (!(r.integral <= 1 + 1e-3)) {
         std::ostringstream m;

@@ -71,7 +71,7 @@ struct ndf_map_params {
     int supersample = 0;         // sub-samples per bin side; 0: the rule in the header (spacing <= sigma_r / 2)
     double tau = 1;              // tiles at most tau x the footprint's minor sd on a side, (0, 8]
     double cull = 3.5;           // tile weights' culling radius (Mahalanobis; tapered from cull - 1), [2, 8]
-    int max_tiles = 64;          // tiles per level per pixel, 4 to 4096
+    int max_tiles = 256;         // tiles per level per pixel, 4 to 4096 (a tile is one bilinear lookup)
     double direct_below = 1;     // the element path below this minor sd (texels), blended up to twice it, [0.125, 64]
     double blend = 0.25;         // the fraction of an octave over which two levels blend, (0, 1]
     // Called after each level-0 tile is binned (tiles done, tiles in all).

@@ -24,7 +24,7 @@ glint::normal_map example(glint::pattern kind, int n) { return glint::make_norma
 
 map_t small_map(glint::pattern kind, int n = 16, double sigma_r = 0.02, int res = 64) {
     glint::ndf_map_params mp;
-    mp.sigma_r = sigma_r, mp.resolution = res, mp.max_tiles = 256;
+    mp.sigma_r = sigma_r, mp.resolution = res;
     return map_t::build(example(kind, n), mp);
 }
 
@@ -147,12 +147,12 @@ TEST_CASE("ndf_map: the element path of a tiled identity layout is the example's
 TEST_CASE("ndf_map: L1 against the direct P-NDF of the same tiled example at the map's resolution, five examples") {
     // 32^2 examples, sigma_r = 0.02, 64^2 bins, tau = 1, up to 256 tiles. Reference: the example's
     // direct P-NDF (glint::gaussian_pndf with its hierarchy; the same elements and culling), each
-    // bin's mean from 2 x 2 sub-samples; the map at the bin centres (its stored bin mixture). The
+    // bin's mean from 3 x 3 sub-samples (spacing 0.4 sigma_r); the map at the bin centres (its stored bin mixture). The
     // issue's target: at most 5% from a footprint sd of 4 texels, falling with the footprint.
     for (const auto kind : glint_test::example_kinds) {
         const auto ex = example(kind, 32);
         glint::ndf_map_params mp;
-        mp.sigma_r = 0.02, mp.resolution = 64, mp.max_tiles = 256;
+        mp.sigma_r = 0.02, mp.resolution = 64;
         const auto m = map_t::build(ex, mp);
         glint::gaussian_params<float> g;
         g.sigma_r = 0.02f;
@@ -163,7 +163,7 @@ TEST_CASE("ndf_map: L1 against the direct P-NDF of the same tiled example at the
         for (const float sd : {4.0f, 8.0f, 64.0f, 512.0f}) {
             const auto fp = fp_at({13.3f, 7.7f}, sd, 0.7f * sd, 0.4f);
             const double l1 = glint_test::binned_l1(
-                m, [&](glm::vec2 s) { return static_cast<double>(m.eval(pl, fp, s)); }, [&](glm::vec2 s) { return static_cast<double>(ref.eval(fp, s)); });
+                m, [&](glm::vec2 s) { return static_cast<double>(m.eval(pl, fp, s)); }, [&](glm::vec2 s) { return static_cast<double>(ref.eval(fp, s)); }, 3);
             row += " sd " + std::to_string(static_cast<int>(sd)) + ": " + std::to_string(l1);
             CHECK(l1 <= 0.05);
             l1s.push_back(l1);
@@ -305,25 +305,29 @@ TEST_CASE("ndf_map: a stochastic layout keeps the footprint's mass and tracks it
     MESSAGE("mass over sd 2 to 512: [" << lo << ", " << hi << "]");
     CHECK(lo > 0.999);
     CHECK(hi < 1.001);
+    // Against the element path at the map's resolution (sigma_r = 0.04 so that 3 x 3 sub-samples
+    // resolve the reference's bin means: spacing 0.33 sigma_r).
+    const auto wide = small_map(glint::pattern::noise, 16, 0.04, 32);
     for (const float sd : {3.0f, 6.0f}) {
         double l1 = 0;
-        const int count = 4;
+        const int count = 2;
         for (std::uint32_t i = 0; i < count; ++i) {
             const auto fp = fp_at({300 * rnd(i, 7), 300 * rnd(i, 8)}, sd, sd * 0.8f, rnd(i, 9));
             l1 += glint_test::binned_l1(
-                      m, [&](glm::vec2 s) { return static_cast<double>(m.eval(pl, fp, s)); },
-                      [&](glm::vec2 s) { return static_cast<double>(m.eval_direct(pl, fp, s)); }, 1) /
+                      wide, [&](glm::vec2 s) { return static_cast<double>(wide.eval(pl, fp, s)); },
+                      [&](glm::vec2 s) { return static_cast<double>(wide.eval_direct(pl, fp, s)); }, 3) /
                   count;
         }
         MESSAGE("stochastic, sd " << sd << ": mean L1 against its element path " << l1);
         // Tiles are owned by their centres, the element path by each element: a bound that a
-        // working layout keeps and a broken one does not (below: another seed's copies, L1 near 1).
-        CHECK(l1 < 0.15);
+        // working layout keeps and a broken one does not (below: another seed's copies).
+        CHECK(l1 < 0.1);
     }
     const auto other = placement::stochastic(20.0f, 6u, glm::vec2(0, 6.2831853f), glm::vec2(0.8f, 1.25f), 0.5f);
     const auto fp = fp_at({300 * rnd(0, 7), 300 * rnd(0, 8)}, 3, 2.4f, rnd(0, 9));
     const double wrong = glint_test::binned_l1(
-        m, [&](glm::vec2 s) { return static_cast<double>(m.eval(other, fp, s)); }, [&](glm::vec2 s) { return static_cast<double>(m.eval_direct(pl, fp, s)); }, 1);
+        wide, [&](glm::vec2 s) { return static_cast<double>(wide.eval(other, fp, s)); },
+        [&](glm::vec2 s) { return static_cast<double>(wide.eval_direct(pl, fp, s)); }, 3);
     MESSAGE("another seed's copies against this layout's element path: L1 " << wrong);
     CHECK(wrong > 0.3);
 }

@@ -22,13 +22,21 @@
 // 1e-34: a point sample per bin, as a bin of 2 / 128 = 0.0156 against sigma_r = 0.005 would be,
 // aliases by tens of percent). Every coarser tile is the exact mean of its four children as stored
 // (in double, rounded once). The window: the square around every lobe to 4.5 sd (mass outside
-// below 1e-5), or [-1, 1]^2 (ndf_map_params::fit_window = false).
+// below 1e-5), or [-1, 1]^2 (ndf_map_params::fit_window = false). Beyond the paper, every bin also
+// holds the NDF's first moments in position, B_x, B_y (kernels/ndf_map.glsl), and the running sum
+// of bin masses for sampling: 4 floats per bin (XTXW24 stores 1).
 //
 // Evaluation (Sec. 6.3; the paper gives no weights, the rules here are glint's):
 // - the footprint N(mu, Sigma) goes into each copy's example frame, mu' = A^-1 (mu - anchor) +
 //   offset, Sigma' = A^-1 Sigma A^-T, and s into s_ex (normals under A: kernels/ndf_map.glsl);
+// - Eq. 8-9's M acts on the example's texel coordinates (homogeneous, third coordinate 1: the
+//   paper's t_z = sqrt(1 - t_x^2 - t_y^2) would make translation depend on position); its linear
+//   part is A, its translation the anchor and offset;
 // - tiles of level l count with their footprint mass W = t^2 N(c_T; mu', Sigma' + (sigma_h^2 +
-//   t^2 / 12) I), tapered to 0 from Mahalanobis radius cull - 1 to cull, and D = sum W B_T / sum W;
+//   t^2 / 12) I), tapered to 0 from Mahalanobis radius cull - 1 to cull, and
+//   D = sum W (B_T + t g . (B_x, B_y)_T) / sum W, g the gradient of the elements' log weight at the
+//   tile's centre (first order in position; the published zero-order tiles, eval_zero_order, err
+//   2 to 5 times more at footprints of 4 to 8 texels);
 // - the level: tiles no wider than tau x the minor sd, and at most max_tiles in the culling
 //   ellipse; the last `blend` of each octave blends the level with the next coarser, so D is
 //   continuous as the footprint grows; a tiled layout at the top level is B_top (every top tile is);
@@ -38,10 +46,11 @@
 //   cell); footprints from a quarter to half a cell blend into whole copies (each copy's top image
 //   weighted by cell^2 N(anchor; mu, Sigma + cell^2 / 12 I)); footprints wider than max_cells cells
 //   across their culling box are narrowed to that.
-// Measured errors (L1 against the element path of the same layout) and costs: docs/ndf_map.md.
+// Measured errors (L1 against the direct P-NDF of the same layout) and costs: docs/ndf_map.md.
 //
-// Sampling: a part, a tile or element by its share, then s from the tile's bilinear image exactly
-// (or the element's lobe): the density is exactly eval / mass.
+// Sampling: a part, a tile or element by its share, then s from the tile's bilinear image B
+// exactly (or the element's lobe): its density is the zero-order P-NDF over mass (pdf()), which is
+// positive wherever eval is, so eval / pdf is an unbiased weight.
 //
 // Domains: sigma_r in [1e-4, 1]; footprints finite (a covariance with anisotropy above 16 grows its
 // minor axis to major / 16); s finite. Per-pixel calls never allocate or throw, and return 0 for

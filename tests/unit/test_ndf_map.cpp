@@ -232,7 +232,7 @@ TEST_CASE("ndf_map: continuous as the footprint grows by 1% and moves across til
     const auto pl = placement::tiled();
     const auto l1 = [&](const glint::texel_footprint<float>& a, const glint::texel_footprint<float>& b) {
         return glint_test::grid_l1(
-            m, [&](glm::vec2 s) { return static_cast<double>(m.eval(pl, a, s)); }, [&](glm::vec2 s) { return static_cast<double>(m.eval(pl, b, s)); }, 24);
+            m, [&](glm::vec2 s) { return static_cast<double>(m.eval(pl, a, s)); }, [&](glm::vec2 s) { return static_cast<double>(m.eval(pl, b, s)); }, 16);
     };
     double worst = 0, worst_sd = 0;
     for (float sd = 0.5f; sd < 600; sd *= 1.01f) {

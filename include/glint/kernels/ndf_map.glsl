@@ -21,7 +21,8 @@
 //
 // A tile's term is first order in position: sum_{i in T} w_i L_i(s) = W_T (B + t g . (B_x, B_y)) +
 // O(t^2), g the gradient of log w at c_T, w_i the elements' footprint weights (glint's extension of
-// Eq. 7's zero-order tiles, which err by about t / (4 sigma) in L1; docs/ndf_map.md).
+// Eq. 7's zero-order tiles, which err 2 to 5 times more at footprints of 4 to 8 texels, measured
+// in docs/ndf_map.md).
 //
 // Layouts. A copy maps example texels u_ex to global texels x = anchor + A (u_ex - offset) and is
 // periodic in the example (the example repeats). Tiled: one copy, A = the placement's A0.
@@ -56,7 +57,8 @@ GLINT_CONST(int) GLINT_NDF_MASS = 1;
 GLINT_CONST(int) GLINT_NDF_SELECT = 2;
 // As EVAL with zero-order tiles (B alone): the density glint_ndf_sample draws from.
 GLINT_CONST(int) GLINT_NDF_DENSITY = 3;
-// The largest footprint anisotropy (major / minor sd); wider ones grow their minor axis.
+// The largest footprint anisotropy (major / minor sd); wider ones grow their minor axis (16, as
+// hardware anisotropic filtering caps it).
 GLINT_CONST(real) GLINT_NDF_MAX_ANISOTROPY = real(16);
 // Every point owned by an anchor lies within sqrt(2) (1/2 + 1/4) cell = 1.0607 cell of it (the
 // point's own cell's anchor is at most that far), rounded up.
@@ -188,6 +190,8 @@ GLINT_FN int glint_ndf_index(real x) {
 // ---------------------------------------------------------------------------------------------
 // Stochastic placement: the cell's hash, anchor and copy, and the owner of a point.
 
+// The cell's hashes: PCG3D of (cell, seed ^ salt); the salts (0, 0x68e31da4, 0xb5297a4d) are
+// arbitrary distinct words that give each draw its own stream.
 GLINT_FN uvec3 glint_ndf_cell_hash(glint_ndf_placement pl, ivec2 cell, uint salt) {
     return glint_pcg3d(uvec3(uint(cell.x), uint(cell.y), pl.seed ^ salt));
 }
@@ -265,7 +269,7 @@ GLINT_FN glint_ndf_rivals glint_ndf_make_rivals(glint_ndf_placement pl, glint_nd
             d2 = min(d2, dot(d, d));
             k += 1;
         }
-    r.inner = real(0.2401) * d2;
+    r.inner = real(0.2401) * d2;  // (0.49 d)^2
     return r;
 }
 

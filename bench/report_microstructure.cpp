@@ -21,25 +21,8 @@ namespace {
 
 glint::texel_footprint<float> footprint(glm::vec2 c, float a, float b, float t) { return glint_test::rotated_footprint(c, a, b, t); }
 
-float unit(std::uint32_t i, std::uint32_t s) { return glint::unit_from_bits<float>(glint::pcg3d(glm::uvec3(i, s, 0x3e7u)).x); }
-
-// Queries where the P-NDF lives: footprints of sd `sigma` (aspect 1 to 2), s near the normal at
-// the centre.
-struct query {
-    glint::texel_footprint<float> fp;
-    glm::vec2 s;
-};
-std::vector<query> queries(const glint::pattern_params& p, float sigma, int n) {
-    std::vector<query> q;
-    for (int i = 0; i < n; ++i) {
-        const auto u = static_cast<std::uint32_t>(i);
-        const glm::vec2 c(static_cast<float>(p.width) * unit(u, 1), static_cast<float>(p.height) * unit(u, 2));
-        const glm::dvec3 nrm = glint::pattern_normal(p, glm::dvec2(c));
-        q.push_back({footprint(c, sigma, sigma * (0.5f + 0.5f * unit(u, 3)), 3.1f * unit(u, 4)),
-                     glm::vec2(static_cast<float>(nrm.x), static_cast<float>(nrm.y)) + 0.02f * glm::vec2(unit(u, 5) - 0.5f, unit(u, 6) - 0.5f)});
-    }
-    return q;
-}
+using query = glint_test::pndf_query;
+std::vector<query> queries(const glint::pattern_params& p, float sd, int n) { return glint_test::pndf_queries(p, sd, n, 1.0f, 0x3e7u); }
 
 double seconds_since(std::chrono::steady_clock::time_point t) { return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count(); }
 

@@ -29,23 +29,8 @@ float unit(std::uint32_t i, std::uint32_t s) { return glint::unit_from_bits<floa
 
 glint::texel_footprint<float> fp_at(glm::vec2 c, float a, float b, float t) { return glint_test::rotated_footprint(c, a, b, t); }
 
-struct query {
-    glint::texel_footprint<float> fp;
-    glm::vec2 s;
-};
-// Footprints of sd `sd` (aspect 1 to 2, any rotation) at random centres, s within 0.02 of the
-// normal at the centre (where the P-NDF lives).
-std::vector<query> queries(const glint::pattern_params& p, float sd, int n) {
-    std::vector<query> q;
-    for (int i = 0; i < n; ++i) {
-        const auto u = static_cast<std::uint32_t>(i);
-        const glm::vec2 c(static_cast<float>(p.width) * 8 * unit(u, 1), static_cast<float>(p.height) * 8 * unit(u, 2));
-        const glm::dvec3 nrm = glint::pattern_normal(p, glm::dvec2(c));
-        q.push_back({fp_at(c, sd, sd * (0.5f + 0.5f * unit(u, 3)), 3.1f * unit(u, 4)),
-                     glm::vec2(static_cast<float>(nrm.x), static_cast<float>(nrm.y)) + 0.02f * glm::vec2(unit(u, 5) - 0.5f, unit(u, 6) - 0.5f)});
-    }
-    return q;
-}
+using query = glint_test::pndf_query;
+std::vector<query> queries(const glint::pattern_params& p, float sd, int n) { return glint_test::pndf_queries(p, sd, n, 8.0f, 0x7d3u); }
 
 glint::ndf_map_params params(double sigma_r, int res) {
     glint::ndf_map_params mp;
@@ -219,20 +204,11 @@ section ndf_map_section(double min_time) {
         const auto ex = glint::make_normal_map(glint_test::example_pattern(glint::pattern::noise, n));
         const auto m = map_t::build(ex, params(0.01, 64));
         const auto pl = placement::tiled();
-        const auto l1 = [&](const glint::texel_footprint<float>& a, const glint::texel_footprint<float>& b) {
-            return glint_test::grid_l1(
-                m, [&](glm::vec2 s) { return static_cast<double>(m.eval(pl, a, s)); }, [&](glm::vec2 s) { return static_cast<double>(m.eval(pl, b, s)); }, 32);
-        };
-        double worst = 0, at = 0;
-        for (float sd = 0.5f; sd < 600; sd *= 1.01f) {
-            const double d = l1(fp_at({9.3f, 20.6f}, sd * 1.01f, sd * 0.7f * 1.01f, 0.3f), fp_at({9.3f, 20.6f}, sd, sd * 0.7f, 0.3f));
-            if (d > worst) worst = d, at = sd;
-        }
-        double move = 0;
-        for (float x = 6; x < 34; x += 1.0f / 32) move = std::max(move, l1(fp_at({x + 1.0f / 32, 11.2f}, 5, 5, 0), fp_at({x, 11.2f}, 5, 5, 0)));
+        const glm::dvec2 worst = glint_test::largest_growth_step(m, pl, {9.3f, 20.6f}, 0.7f, 0.3f, 0.5f, 600, 32);
+        const double move = glint_test::largest_move_step(m, pl, 5, 6, 34, 11.2f, 32);
         md << "\n### Continuity\n\nNoise example, S = 64: the largest pointwise L1 between a footprint and the same grown by 1%, over sd 0.5 to 600 "
               "texels (every level and path switch on the way): "
-           << fmt(worst, "%.4f") << " (at sd " << fmt(at, "%.2f") << "; target 0.02). Moving a footprint of sd 5 by 1/32 texel across tile seams "
+           << fmt(worst.x, "%.4f") << " (at sd " << fmt(worst.y, "%.2f") << "; target 0.02). Moving a footprint of sd 5 by 1/32 texel across tile seams "
            << "and the example's seam: at most " << fmt(move, "%.5f") << ".\n";
     }
 

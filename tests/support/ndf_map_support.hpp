@@ -2,11 +2,14 @@
 // P-NDF and a reference over the map's s-window.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 
 #include <glint/ndf_map.hpp>
 #include <glint/patterns.hpp>
+
+#include "pndf_support.hpp"
 
 namespace glint_test {
 
@@ -59,6 +62,34 @@ inline double grid_l1(const glint::ndf_map<float>& m, const std::function<double
             l1 += std::fabs(a(s) - vb), norm += vb;
         }
     return norm > 0 ? l1 / norm : 0.0;
+}
+
+// The largest grid_l1 step of the map's P-NDF on layout pl as a footprint at `centre` (sds sd and
+// aspect sd, rotated by angle) grows in 1% steps from sd = lo to hi: (the step, the sd where it is).
+inline glm::dvec2 largest_growth_step(const glint::ndf_map<float>& m, const glint::ndf_placement<float>& pl, glm::vec2 centre, float aspect, float angle,
+                                      float lo, float hi, int g) {
+    const auto at = [&](float sd) { return rotated_footprint(centre, sd, aspect * sd, angle); };
+    glm::dvec2 worst(0);
+    for (float sd = lo; sd < hi; sd *= 1.01f) {
+        const auto a = at(sd * 1.01f), b = at(sd);
+        const double d = grid_l1(
+            m, [&](glm::vec2 s) { return static_cast<double>(m.eval(pl, a, s)); }, [&](glm::vec2 s) { return static_cast<double>(m.eval(pl, b, s)); }, g);
+        if (d > worst.x) worst = glm::dvec2(d, sd);
+    }
+    return worst;
+}
+
+// The largest grid_l1 step as an isotropic footprint of sd `sd` moves along x from x0 to x1 at
+// height y in steps of 1/32 texel.
+inline double largest_move_step(const glint::ndf_map<float>& m, const glint::ndf_placement<float>& pl, float sd, float x0, float x1, float y, int g) {
+    double worst = 0;
+    for (float x = x0; x < x1; x += 1.0f / 32) {
+        const auto a = rotated_footprint(glm::vec2(x + 1.0f / 32, y), sd, sd, 0.0f), b = rotated_footprint(glm::vec2(x, y), sd, sd, 0.0f);
+        worst = std::max(worst, grid_l1(
+                                    m, [&](glm::vec2 s) { return static_cast<double>(m.eval(pl, a, s)); },
+                                    [&](glm::vec2 s) { return static_cast<double>(m.eval(pl, b, s)); }, g));
+    }
+    return worst;
 }
 
 }  // namespace glint_test

@@ -31,6 +31,28 @@ glint::texel_footprint<real> rotated_footprint(glm::vec<2, real, glm::defaultp> 
     return f;
 }
 
+// A footprint and an s where the P-NDF lives, for timing queries.
+struct pndf_query {
+    glint::texel_footprint<float> fp;
+    glm::vec2 s;
+};
+
+// n queries: footprints of sd `sd` (aspect 1 to 2, any rotation) centred uniformly over `spread`
+// periods of the pattern, s within 0.01 of the pattern's normal at the centre on each axis; the
+// variates from PCG3D of (i, stream, salt).
+inline std::vector<pndf_query> pndf_queries(const glint::pattern_params& p, float sd, int n, float spread, std::uint32_t salt) {
+    const auto unit = [salt](std::uint32_t i, std::uint32_t stream) { return glint::unit_from_bits<float>(glint::pcg3d(glm::uvec3(i, stream, salt)).x); };
+    std::vector<pndf_query> q;
+    for (int i = 0; i < n; ++i) {
+        const auto u = static_cast<std::uint32_t>(i);
+        const glm::vec2 c(static_cast<float>(p.width) * spread * unit(u, 1), static_cast<float>(p.height) * spread * unit(u, 2));
+        const glm::dvec3 nrm = glint::pattern_normal(p, glm::dvec2(c));
+        q.push_back({rotated_footprint(c, sd, sd * (0.5f + 0.5f * unit(u, 3)), 3.1f * unit(u, 4)),
+                     glm::vec2(static_cast<float>(nrm.x), static_cast<float>(nrm.y)) + 0.02f * glm::vec2(unit(u, 5) - 0.5f, unit(u, 6) - 0.5f)});
+    }
+    return q;
+}
+
 // The P-NDF (default culling, one element per texel) of a square periodic pattern.
 template <class real>
 glint::gaussian_pndf<real> pattern_pndf(glint::pattern kind, int size, double slope_rms, real sigma_r) {

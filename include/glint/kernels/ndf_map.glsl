@@ -624,6 +624,21 @@ struct glint_ndf_parts {
     glint_ndf_sum whole;
 };
 
+// A tiled layout's level at the top: one tiled example under the whole footprint, every top tile
+// the same image, so the part is that image alone (weight 1; a draw always picks it).
+GLINT_FN glint_ndf_sum glint_ndf_top_image(GLINT_NDF_DATA_PARAM glint_ndf_map_params p, ivec2 cell, vec2 s_ex, real jac, int mode, glint_ndf_sum acc) {
+    int layer = glint_ndf_level_first(p.n, p.levels - 1);
+    acc.den = real(1);
+    if (mode == GLINT_NDF_EVAL || mode == GLINT_NDF_DENSITY) acc.num = jac * glint_ndf_image(GLINT_NDF_DATA_ARG p, layer, s_ex).x;
+    else acc.mass = glint_ndf_tile_mass(GLINT_NDF_DATA_ARG p, layer);
+    if (mode == GLINT_NDF_SELECT) {
+        acc.found = true;
+        acc.layer = layer;
+        acc.cell = cell;
+    }
+    return acc;
+}
+
 // What one copy adds to each part that `select` (-1: all) names: 0 direct, 1 fine, 2 coarse, 3 whole.
 GLINT_FN glint_ndf_parts glint_ndf_copy_parts(GLINT_ELEMENT_DATA_PARAM GLINT_NDF_DATA_PARAM glint_ndf_map_params p, glint_ndf_placement pl,
                                               glint_ndf_plan plan, glint_ndf_copy c, vec2 s, int mode, int select, glint_ndf_parts a) {
@@ -639,23 +654,14 @@ GLINT_FN glint_ndf_parts glint_ndf_copy_parts(GLINT_ELEMENT_DATA_PARAM GLINT_NDF
         a.direct = glint_ndf_element_sum(GLINT_ELEMENT_DATA_ARG p, pl, c, owned, rv, lc.box, real(1), lc.mu, lc.cov, s_ex, se.z, mode, a.direct);
     if (tiles && (select < 0 || select == 1)) {
         if (!owned && plan.level == top) {
-            // One tiled example under the whole footprint: every top tile is the same image.
-            int layer = glint_ndf_level_first(p.n, top);
-            a.fine.den = real(1);
-            if (mode == GLINT_NDF_EVAL || mode == GLINT_NDF_DENSITY) a.fine.num = se.z * glint_ndf_image(GLINT_NDF_DATA_ARG p, layer, s_ex).x;
-            else a.fine.mass = glint_ndf_tile_mass(GLINT_NDF_DATA_ARG p, layer);
-            if (mode == GLINT_NDF_SELECT) a.fine.found = true, a.fine.layer = layer, a.fine.cell = c.cell;
+            a.fine = glint_ndf_top_image(GLINT_NDF_DATA_ARG p, c.cell, s_ex, se.z, mode, a.fine);
         } else {
             a.fine = glint_ndf_level_sum(GLINT_NDF_DATA_ARG p, pl, c, owned, rv, lc.box, plan.level, real(1), lc.mu, lc.cov, s_ex, se.z, mode, a.fine);
         }
     }
     if (tiles && plan.alpha > real(0) && (select < 0 || select == 2)) {
         if (!owned && plan.level + 1 == top) {
-            int layer = glint_ndf_level_first(p.n, top);
-            a.coarse.den = real(1);
-            if (mode == GLINT_NDF_EVAL || mode == GLINT_NDF_DENSITY) a.coarse.num = se.z * glint_ndf_image(GLINT_NDF_DATA_ARG p, layer, s_ex).x;
-            else a.coarse.mass = glint_ndf_tile_mass(GLINT_NDF_DATA_ARG p, layer);
-            if (mode == GLINT_NDF_SELECT) a.coarse.found = true, a.coarse.layer = layer, a.coarse.cell = c.cell;
+            a.coarse = glint_ndf_top_image(GLINT_NDF_DATA_ARG p, c.cell, s_ex, se.z, mode, a.coarse);
         } else {
             a.coarse = glint_ndf_level_sum(GLINT_NDF_DATA_ARG p, pl, c, owned, rv, lc.box, plan.level + 1, real(1), lc.mu, lc.cov, s_ex, se.z, mode, a.coarse);
         }

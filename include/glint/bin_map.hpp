@@ -1,0 +1,750 @@
+// Inverse bin maps (AKKW): the filtered NDF of a large normal map over any pixel footprint, at a
+// few bytes per texel, in time that hardly grows with the footprint. CPU only: the queries are
+// written in the kernel subset's style (no recursion, fixed-size stacks, index arithmetic) so
+// that a GPU port is mechanical.
+//
+//   glint::normal_map m = glint::make_normal_map(p);               // or glint::io::read_normal_map
+//   glint::bin_map_options o;  o.bins_per_side = 64;               // B = 64^2 half-vector bins
+//   auto bins = glint::bin_map<float>::build(m, o);                // host side, may throw glint::error
+//   auto A = glint::uv_parallelogram<float>::from_differentials(uv, duvdx, duvdy);   // per pixel
+//   auto e = bins.eval(A, h);          // e.pdf: density of normals per solid angle; e.ndf = pdf / h.z
+//   auto s = bins.sample(A, u_pos, u_dir);   // s.h with s.pdf == eval(A, s.h).pdf
+//
+// The model (AKKW Sec. 2; the talk has no numbered equations, so "AKKW E2" names the display in
+// its Sec. 2). The NDF of a normal map is D(h, x) = sum_k delta(t_k, h) 1_{T_k}(x) (E1: texel k's
+// normal t_k over its square T_k). Averaged over a footprint A and a bin H_j it is
+//   D_A^H = 1 / (|H| |A|) sum_k 1_H(t_k) |A n T_k|                                  (AKKW E2)
+// glint writes it as a pdf of normals per solid angle, p_A(h) = sum_j c_j K_j(h), with the bin
+// coverages c_j = sum_{k in bin j} w_k(A) / sum_k w_k(A) (so sum_j c_j = 1) and a kernel K_j:
+// - box (the talk): K_j = 1_{H_j} / |H_j|, so p_A(h) = c_{bin(h)} B / (2 pi);
+// - tent: the box density convolved with a box one bin wide in the bins' square coordinates,
+//   which is the bilinear interpolation of c_j B between bin centres (clamped at the square's
+//   edges); continuous in h, and it keeps every c_j's integral;
+// - beckmann (the follow-up, Atanasov et al. 2021, "flake roughness"): K_j is the Beckmann lobe of
+//   roughness alpha around bin j's centre, truncated where tan^2 theta > alpha^2 ln(1 / epsilon)
+//   and divided by its kept mass 1 - epsilon (the public plugin keeps a fixed 21-bin window and does
+//   not renormalise). Mass of lobes that reaches below the horizon is lost (sample() reports it as
+//   a failed draw).
+// The talk's D is this pdf of normals; the microfacet NDF D(h) (with integral of D cos theta_h = 1,
+// the convention of glint/microfacet.hpp and the P-NDF's D_P(s)) is ndf = pdf / cos theta_h.
+//
+// Bins (AKKW Sec. 2 asks for B bins of equal solid angle 2 pi / B and names no layout): the
+// hemisphere is the image of the unit square under Shirley and Chiu's concentric map followed by
+// the Lambert (equal-area) map of the disk, z = 1 - r^2, xy = d sqrt(2 - r^2), whose Jacobian is the
+// constant 2 pi; the square is cut into n x n cells, so every bin has solid angle exactly 2 pi / n^2
+// and a uniform point in a cell is a uniform direction in its bin.
+//
+// Weights w_k(A) (the coverage rule):
+// - exact_area (the talk's |A n T_k|): the area of texel k's square inside A; the normaliser is |A|;
+// - texel_center (the public plugin's): 1 where texel k's centre lies in A, else 0; the normaliser
+//   is the number of centres in A (one pass over A's rows). Decided per row: A's x-interval at the
+//   centre's y, half-open [xa, xb), computed the same way in the count of every bin and in the
+//   normaliser, so that the coverages sum to 1 exactly.
+// The texture repeats (periodic wrap): A is taken over every tile copy it touches; a copy that
+// covers a whole tree node adds the node's count at once (the talk's prefiltering). Beyond
+// max_tile_copies copies the coverages are the global histogram (their error is A's partly
+// covered tiles over all it covers, measured in docs/bin_map.md). A footprint of zero area is a
+// point query (the texel holding its centre gets coverage 1), and so is a texel_center footprint
+// that holds no centre; a footprint with a non-finite number gives pdf 0 and no sample.
+//
+// Data (AKKW Sec. 2.3). Per texel its bin (16 bits when B <= 65536, else 32; the normals are not
+// kept); per bin the list of its texels ((y << 16) | x, so sides up to 65536) in one array with an
+// offset per bin (the talk's hash map is not needed: the offsets are dense); the lists are ordered
+// by the preorder of the implicit kd tree that halves the longer side of the whole texture (child 0
+// takes floor(side / 2), x on ties), so every node's texels are contiguous in every list. Each list
+// longer than leaf_size gets its own tree over the same implicit splits: nodes in preorder, each
+// the offset where its child 1's texels start and the index of child 1's node; a child with at
+// most leaf_size texels is a leaf (scanned), with none it is skipped. Build: one preorder pass over
+// the texture, a counting sort by bin (stable, so each list stays in preorder), and a binary search
+// per tree node: O(texels + bins) but for the searches.
+//
+// Per-pixel calls (eval, sample, coverage, count) are const, allocation-free, never throw,
+// and are safe to call from many threads.
+#pragma once
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "glint/core/error.hpp"
+#include "glint/normal_map.hpp"
+
+namespace glint {
+
+enum class bin_kernel { box, tent, beckmann };
+enum class coverage_rule { exact_area, texel_center };
+
+struct bin_map_options {
+    int bins_per_side = 32;                        // n, B = n^2 bins: [1, 4096]
+    bin_kernel kernel = bin_kernel::box;
+    double alpha = 0.01;                           // beckmann: flake roughness, [0.0025, 0.5]
+    double epsilon = 0.0111;                       // beckmann: mass cut from each lobe's tail, [1e-4, 0.2]
+    int leaf_size = 16;                            // L (AKKW Sec. 2.3: 16): lists this short are scanned, [1, 2^20]
+    coverage_rule rule = coverage_rule::exact_area;
+    int max_tile_copies = 256;                     // [1, 2^20]; beyond: the global histogram
+};
+
+// A footprint in uv (the texture is [0, 1)^2, repeated): { origin + a e0 + b e1 : a, b in [0, 1) }.
+template <class real>
+struct uv_parallelogram {
+    glm::vec<2, real, glm::defaultp> origin{0}, e0{0}, e1{0};
+
+    // The ray-differential parallelogram of a pixel (as the public plugin: centred on uv, edges
+    // duv/dx and duv/dy), with uv reduced modulo 1 so that float keeps its sub-texel bits.
+    static uv_parallelogram from_differentials(const glm::vec<2, real, glm::defaultp>& uv, const glm::vec<2, real, glm::defaultp>& duvdx,
+                                               const glm::vec<2, real, glm::defaultp>& duvdy) {
+        const glm::vec<2, real, glm::defaultp> c = uv - glm::floor(uv);
+        return {c - real(0.5) * (duvdx + duvdy), duvdx, duvdy};
+    }
+    static uv_parallelogram rect(const glm::vec<2, real, glm::defaultp>& lo, const glm::vec<2, real, glm::defaultp>& hi) {
+        return {lo, {hi.x - lo.x, real(0)}, {real(0), hi.y - lo.y}};
+    }
+};
+
+template <class real>
+struct bin_eval {
+    real pdf = 0;  // density of normals per solid angle (integrates to 1 over the hemisphere, less what a lobe loses below it)
+    real ndf = 0;  // the microfacet NDF: pdf / cos theta_h (0 at and below the horizon)
+};
+
+template <class real>
+struct bin_sample {
+    glm::vec<3, real, glm::defaultp> h{0, 0, 1};
+    real pdf = 0;  // eval(A, h).pdf
+    bool valid = false;
+};
+
+struct bin_map_statistics {
+    std::size_t texels = 0, bins = 0, nonempty_bins = 0, trees = 0, nodes = 0;
+    int depth = 0;          // of the implicit tree (levels below the root)
+    double build_seconds = 0;
+};
+
+template <class real>
+class bin_map {
+public:
+    using vec2 = glm::vec<2, real, glm::defaultp>;
+    using vec3 = glm::vec<3, real, glm::defaultp>;
+
+    static constexpr int max_side = 65536;
+    static constexpr int max_bins_per_side = 4096;
+    static constexpr int stack_size = 40;  // the implicit tree is at most 32 levels deep for 65536^2
+
+    // Throws glint::error when a map of width x height texels cannot be indexed ((y << 16) | x).
+    static void check_size(long long width, long long height) {
+        if (width < 1 || height < 1) throw error("glint::bin_map: map size " + std::to_string(width) + " x " + std::to_string(height) + " is empty");
+        if (width > max_side) throw error("glint::bin_map: width " + std::to_string(width) + " > " + std::to_string(max_side) + " (texels are indexed by 16-bit x and y)");
+        if (height > max_side) throw error("glint::bin_map: height " + std::to_string(height) + " > " + std::to_string(max_side) + " (texels are indexed by 16-bit x and y)");
+    }
+
+    // Throws glint::error naming the field and value for options outside their domains.
+    static void check_options(const bin_map_options& o) {
+        const auto bad = [](const std::string& what) { throw error("glint::bin_map: " + what); };
+        if (o.bins_per_side < 1 || o.bins_per_side > max_bins_per_side)
+            bad("bins_per_side " + std::to_string(o.bins_per_side) + " is outside [1, " + std::to_string(max_bins_per_side) + "]");
+        if (o.leaf_size < 1 || o.leaf_size > (1 << 20)) bad("leaf_size " + std::to_string(o.leaf_size) + " is outside [1, 2^20]");
+        if (o.max_tile_copies < 1 || o.max_tile_copies > (1 << 20)) bad("max_tile_copies " + std::to_string(o.max_tile_copies) + " is outside [1, 2^20]");
+        if (o.kernel == bin_kernel::beckmann) {
+            if (!(o.alpha >= 0.0025 && o.alpha <= 0.5)) bad("alpha " + std::to_string(o.alpha) + " is outside [0.0025, 0.5]");
+            if (!(o.epsilon >= 1e-4 && o.epsilon <= 0.2)) bad("epsilon " + std::to_string(o.epsilon) + " is outside [1e-4, 0.2]");
+            // The bins a lobe reaches must fit the query's 64 x 64 window of cells (lobe_window).
+            const double reach = lobe_reach_cells(o);
+            if (reach > 30)
+                bad("alpha " + std::to_string(o.alpha) + " spans about " + std::to_string(static_cast<int>(reach)) + " bins at bins_per_side " +
+                    std::to_string(o.bins_per_side) + " (at most 30: use fewer bins or a smaller alpha)");
+        }
+    }
+
+    static bin_map build(const normal_map& map, const bin_map_options& options = {}) {
+        const auto t0 = std::chrono::steady_clock::now();
+        check_size(map.width(), map.height());
+        check_options(options);
+        bin_map m;
+        m.o_ = options;
+        m.n_ = options.bins_per_side;
+        m.w_ = map.width(), m.h_ = map.height();
+        const std::size_t texels = static_cast<std::size_t>(m.w_) * static_cast<std::size_t>(m.h_);
+        const std::size_t bins = static_cast<std::size_t>(m.n_) * static_cast<std::size_t>(m.n_);
+        m.wide_bins_ = bins > 65536;
+        if (options.kernel == bin_kernel::beckmann) {
+            const double tan2 = options.alpha * options.alpha * std::log(1 / options.epsilon);
+            m.cos_cap_ = 1 / std::sqrt(1 + tan2);
+            m.cos_reach_ = std::cos(std::min(std::acos(m.cos_cap_) + cell_radius(m.n_), pi()));
+        }
+
+        // Bin of every texel (the normal's, AKKW Sec. 2.1), and the counts per bin.
+        if (m.wide_bins_) m.bin32_.resize(texels);
+        else m.bin16_.resize(texels);
+        std::vector<std::uint32_t> count(bins + 1, 0);
+        for (std::size_t k = 0; k < texels; ++k) {
+            const std::uint32_t j = m.bin_of(vec3(map.normals()[k]));
+            if (m.wide_bins_) m.bin32_[k] = j;
+            else m.bin16_[k] = static_cast<std::uint16_t>(j);
+            ++count[j + 1];
+        }
+        m.offset_.resize(bins + 1);
+        for (std::size_t j = 0; j < bins; ++j) count[j + 1] += count[j];
+        for (std::size_t j = 0; j <= bins; ++j) m.offset_[j] = count[j];
+
+        // The texels in the preorder of the implicit tree, and each texel's rank in it.
+        std::vector<std::uint32_t> order(texels), rank(texels);
+        {
+            std::size_t next = 0;
+            region stack[stack_size];
+            int top = 0;
+            stack[top++] = {0, 0, m.w_, m.h_};
+            int depth = 0;
+            std::vector<int> depth_stack;  // only to report the depth: parallel to stack
+            depth_stack.assign(stack_size, 0);
+            while (top > 0) {
+                --top;
+                const region r = stack[top];
+                const int d = depth_stack[static_cast<std::size_t>(top)];
+                depth = std::max(depth, d);
+                if (r.w == 1 && r.h == 1) {
+                    const std::uint32_t k = static_cast<std::uint32_t>(r.x) + static_cast<std::uint32_t>(r.y) * static_cast<std::uint32_t>(m.w_);
+                    rank[k] = static_cast<std::uint32_t>(next);
+                    order[next++] = k;
+                    continue;
+                }
+                region c0, c1;
+                split(r, c0, c1);
+                depth_stack[static_cast<std::size_t>(top)] = d + 1, stack[top++] = c1;
+                depth_stack[static_cast<std::size_t>(top)] = d + 1, stack[top++] = c0;
+            }
+            m.stats_.depth = depth;
+        }
+        // Counting sort by bin, stable: each bin's list stays in preorder.
+        m.texels_.resize(texels);
+        for (std::size_t r = 0; r < texels; ++r) {
+            const std::uint32_t k = order[r];
+            const std::uint32_t j = m.texel_bin_index(k);
+            const std::uint32_t x = k % static_cast<std::uint32_t>(m.w_), y = k / static_cast<std::uint32_t>(m.w_);
+            m.texels_[count[j]++] = (y << 16) | x;
+        }
+        order.clear(), order.shrink_to_fit();
+
+        // One tree per list longer than leaf_size, over the implicit splits.
+        const std::uint32_t leaf = static_cast<std::uint32_t>(options.leaf_size);
+        m.root_.assign(bins, no_node);
+        struct pending {
+            region r;
+            std::uint32_t first_rank, begin, end, parent;  // parent: node whose child-1 index to set, or no_node
+        };
+        std::vector<pending> work;
+        const auto rank_of = [&](std::uint32_t packed) { return rank[(packed & 0xffffu) + (packed >> 16) * static_cast<std::uint32_t>(m.w_)]; };
+        for (std::size_t j = 0; j < bins; ++j) {
+            const std::uint32_t b = m.offset_[j], e = m.offset_[j + 1];
+            if (e > b) ++m.stats_.nonempty_bins;
+            if (e - b <= leaf) continue;
+            ++m.stats_.trees;
+            m.root_[j] = static_cast<std::uint32_t>(m.nodes_.size());
+            work.push_back({{0, 0, m.w_, m.h_}, 0, b, e, no_node});
+            while (!work.empty()) {
+                const pending p = work.back();
+                work.pop_back();
+                const std::uint32_t index = static_cast<std::uint32_t>(m.nodes_.size());
+                if (p.parent != no_node) m.nodes_[p.parent].child1 = index;
+                region c0, c1;
+                split(p.r, c0, c1);
+                const std::uint32_t split_rank = p.first_rank + static_cast<std::uint32_t>(c0.w) * static_cast<std::uint32_t>(c0.h);
+                const std::uint32_t* base = m.texels_.data();
+                const std::uint32_t mid = static_cast<std::uint32_t>(
+                    std::partition_point(base + p.begin, base + p.end, [&](std::uint32_t t) { return rank_of(t) < split_rank; }) - base);
+                m.nodes_.push_back({mid, no_node});
+                // Child 0's subtree follows its parent (preorder); child 1's index is set when it is made.
+                if (p.end - mid > leaf) work.push_back({c1, split_rank, mid, p.end, index});
+                if (mid - p.begin > leaf) work.push_back({c0, p.first_rank, p.begin, mid, no_node});
+            }
+        }
+        m.stats_.texels = texels, m.stats_.bins = bins, m.stats_.nodes = m.nodes_.size();
+        m.stats_.build_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+        return m;
+    }
+
+    // --- bins ---------------------------------------------------------------------------------
+
+    int bins_per_side() const { return n_; }
+    std::uint32_t bin_count() const { return static_cast<std::uint32_t>(n_) * static_cast<std::uint32_t>(n_); }
+    real bin_solid_angle() const { return real(2 * pi() / (static_cast<double>(n_) * n_)); }
+
+    // The bin holding direction h (z >= 0; below the horizon it is clamped onto it).
+    std::uint32_t bin_of(const vec3& h) const {
+        const glm::dvec2 q = hemisphere_to_square(glm::dvec3(h));
+        const int ix = std::clamp(static_cast<int>(q.x * n_), 0, n_ - 1), iy = std::clamp(static_cast<int>(q.y * n_), 0, n_ - 1);
+        return static_cast<std::uint32_t>(ix) + static_cast<std::uint32_t>(iy) * static_cast<std::uint32_t>(n_);
+    }
+    vec3 bin_center(std::uint32_t j) const { return vec3(bin_center_d(j)); }
+
+    // The unit square's point q in [0, 1]^2 as a direction (concentric disk, then Lambert's
+    // equal-area map: d omega = 2 pi dq), and its inverse.
+    static glm::dvec3 square_to_hemisphere(glm::dvec2 q) {
+        const double a = 2 * q.x - 1, b = 2 * q.y - 1;
+        double r, phi;
+        if (a == 0 && b == 0) return {0, 0, 1};
+        if (std::fabs(a) > std::fabs(b)) r = a, phi = 0.25 * pi() * (b / a);
+        else r = b, phi = 0.5 * pi() - 0.25 * pi() * (a / b);
+        const double k = r * std::sqrt(std::max(0.0, 2 - r * r));
+        return {k * std::cos(phi), k * std::sin(phi), 1 - r * r};
+    }
+    static glm::dvec2 hemisphere_to_square(glm::dvec3 h) {
+        const double z = std::clamp(h.z, 0.0, 1.0);
+        const double r = std::sqrt(1 - z);
+        double phi = std::atan2(h.y, h.x);
+        if (!(r > 0) || !std::isfinite(phi)) return {0.5, 0.5};
+        if (phi < -0.25 * pi()) phi += 2 * pi();
+        double a, b;
+        if (phi < 0.25 * pi()) a = r, b = phi * 4 / pi() * r;
+        else if (phi < 0.75 * pi()) b = r, a = -(phi - 0.5 * pi()) * 4 / pi() * r;
+        else if (phi < 1.25 * pi()) a = -r, b = -(phi - pi()) * 4 / pi() * r;
+        else b = -r, a = (phi - 1.5 * pi()) * 4 / pi() * r;
+        return {std::clamp(0.5 * (a + 1), 0.0, 1.0), std::clamp(0.5 * (b + 1), 0.0, 1.0)};
+    }
+
+    // --- the maps -----------------------------------------------------------------------------
+
+    int width() const { return w_; }
+    int height() const { return h_; }
+    const bin_map_options& options() const { return o_; }
+    std::uint32_t texel_bin(int x, int y) const {
+        return texel_bin_index(static_cast<std::uint32_t>(x) + static_cast<std::uint32_t>(y) * static_cast<std::uint32_t>(w_));
+    }
+    // Texels per bin (the global histogram times the texel count).
+    std::uint32_t bin_texels(std::uint32_t j) const { return offset_[j + 1] - offset_[j]; }
+    std::size_t memory_bytes() const {
+        return bin16_.size() * 2 + bin32_.size() * 4 + texels_.size() * 4 + offset_.size() * 4 + root_.size() * 4 + nodes_.size() * sizeof(node);
+    }
+    const bin_map_statistics& statistics() const { return stats_; }
+
+    // --- coverage ------------------------------------------------------------------------------
+
+    // texel_center: the number of texels of bin j whose centres lie in A (over every tile copy,
+    // however many; 0 for a zero-area A). Exact: the tests compare it with a count over every texel.
+    std::uint64_t count(const uv_parallelogram<real>& A, std::uint32_t j) const {
+        const footprint f = prepare(A);
+        if (!f.finite || f.point || j >= bin_count()) return 0;
+        return static_cast<std::uint64_t>(bin_weight(f, j, false) + 0.5);
+    }
+
+    // c_j under the options' rule: bin j's share of A's weight (coverages sum to 1 over the bins).
+    real coverage(const uv_parallelogram<real>& A, std::uint32_t j) const {
+        const footprint f = prepare(A);
+        if (!f.finite || j >= bin_count()) return 0;
+        return static_cast<real>(coverage_of(f, j));
+    }
+
+    // --- the filtered NDF ----------------------------------------------------------------------
+
+    bin_eval<real> eval(const uv_parallelogram<real>& A, const vec3& h) const {
+        bin_eval<real> out;
+        const footprint f = prepare(A);
+        if (!f.finite || !(std::isfinite(h.x) && std::isfinite(h.y) && std::isfinite(h.z))) return out;
+        const glm::dvec3 hd = glm::normalize(glm::dvec3(h));
+        if (!(hd.z >= 0)) return out;
+        const double p = pdf_of(f, hd);
+        out.pdf = static_cast<real>(p);
+        out.ndf = hd.z > 0 ? static_cast<real>(p / hd.z) : real(0);
+        return out;
+    }
+
+    // A normal from p_A (AKKW Sec. 2.1): a texel by its weight in A (a uniform point of A under
+    // exact_area; a uniform centre in A under texel_center, by u_pos.x), then a direction from its
+    // bin's kernel (u_dir). The pdf is eval's, computed in the same call.
+    bin_sample<real> sample(const uv_parallelogram<real>& A, const vec2& u_pos, const vec2& u_dir) const {
+        bin_sample<real> out;
+        const footprint f = prepare(A);
+        if (!f.finite) return out;
+        const std::uint32_t j = sample_texel_bin(f, glm::dvec2(u_pos));
+        const int jx = static_cast<int>(j % static_cast<std::uint32_t>(n_)), jy = static_cast<int>(j / static_cast<std::uint32_t>(n_));
+        const glm::dvec2 u = glm::clamp(glm::dvec2(u_dir), 0.0, std::nextafter(1.0, 0.0));
+        glm::dvec3 h;
+        if (o_.kernel == bin_kernel::box) {
+            h = square_to_hemisphere((glm::dvec2(jx, jy) + u) / static_cast<double>(n_));
+        } else if (o_.kernel == bin_kernel::tent) {
+            // In-cell uniform plus a uniform jitter one cell wide is a triangle on [-1/2, 3/2) cells;
+            // reflected at the square's edges, as the clamped interpolation is.
+            const auto tri = [](double v) { return v < 0.5 ? -0.5 + std::sqrt(2 * v) : 1.5 - std::sqrt(2 * (1 - v)); };
+            const auto reflect = [&](double x) {
+                if (x < 0) x = -x;
+                if (x > n_) x = 2.0 * n_ - x;
+                return std::clamp(x, 0.0, static_cast<double>(n_));
+            };
+            h = square_to_hemisphere(glm::dvec2(reflect(jx + tri(u.x)), reflect(jy + tri(u.y))) / static_cast<double>(n_));
+        } else {
+            // Beckmann around the bin's centre, truncated at tan^2 = alpha^2 ln(1 / epsilon).
+            const double a = o_.alpha, tan2 = -a * a * std::log(1 - u.x * (1 - o_.epsilon));
+            const double c = 1 / std::sqrt(1 + tan2), s = std::sqrt(std::max(0.0, 1 - c * c)), phi = 2 * pi() * u.y;
+            const glm::dvec3 n = bin_center_d(j);
+            glm::dvec3 t, b;
+            basis(n, t, b);
+            h = glm::normalize(s * std::cos(phi) * t + s * std::sin(phi) * b + c * n);
+            if (!(h.z > 0)) return out;  // the lobe's mass below the horizon: a failed draw
+        }
+        out.h = vec3(h);
+        out.pdf = static_cast<real>(pdf_of(f, h));
+        out.valid = out.pdf > 0;
+        return out;
+    }
+
+private:
+    static constexpr std::uint32_t no_node = 0xffffffffu;
+    static constexpr double pi() { return 3.14159265358979323846; }
+
+    struct node {
+        std::uint32_t mid;     // the offset in texels_ where child 1's texels start
+        std::uint32_t child1;  // child 1's node index, if it has one; child 0's is this node's + 1
+    };
+    struct region {
+        int x, y, w, h;
+    };
+
+    // Halves the longer side (x on ties); child 0 takes floor(side / 2).
+    static void split(const region& r, region& c0, region& c1) {
+        if (r.w >= r.h) {
+            const int a = r.w / 2;
+            c0 = {r.x, r.y, a, r.h}, c1 = {r.x + a, r.y, r.w - a, r.h};
+        } else {
+            const int a = r.h / 2;
+            c0 = {r.x, r.y, r.w, a}, c1 = {r.x, r.y + a, r.w, r.h - a};
+        }
+    }
+
+    // A footprint in texels, in double: p(a, b) = o + a e0 + b e1; (a, b) = inv (p - o).
+    struct footprint {
+        glm::dvec2 o{0}, e0{0}, e1{0};
+        glm::dvec2 ia{0}, ib{0};  // rows of the inverse: a = dot(ia, p - o), b = dot(ib, p - o)
+        double area = 0;
+        bool finite = false, point = false;  // point: a point query at the centre texel
+        glm::dvec2 lo{0}, hi{0};              // bounding box
+    };
+
+    footprint prepare(const uv_parallelogram<real>& A) const {
+        footprint f;
+        const glm::dvec2 scale(w_, h_);
+        f.o = glm::dvec2(A.origin) * scale, f.e0 = glm::dvec2(A.e0) * scale, f.e1 = glm::dvec2(A.e1) * scale;
+        const auto finite = [](glm::dvec2 v) { return std::isfinite(v.x) && std::isfinite(v.y); };
+        f.finite = finite(f.o) && finite(f.e0) && finite(f.e1) && std::fabs(f.o.x) < 1e15 && std::fabs(f.o.y) < 1e15 &&
+                   glm::length(f.e0) < 1e15 && glm::length(f.e1) < 1e15;
+        if (!f.finite) return f;
+        // Whole periods move nothing: keep the origin in the first tile for the precision of double.
+        f.o -= glm::floor(f.o / scale) * scale;
+        const double det = f.e0.x * f.e1.y - f.e0.y * f.e1.x;
+        f.area = std::fabs(det);
+        f.point = !(f.area > 1e-12 * std::max(1.0, glm::dot(f.e0, f.e0) + glm::dot(f.e1, f.e1)));
+        if (!f.point) f.ia = glm::dvec2(f.e1.y, -f.e1.x) / det, f.ib = glm::dvec2(-f.e0.y, f.e0.x) / det;
+        const glm::dvec2 c[4] = {f.o, f.o + f.e0, f.o + f.e1, f.o + f.e0 + f.e1};
+        f.lo = glm::min(glm::min(c[0], c[1]), glm::min(c[2], c[3])), f.hi = glm::max(glm::max(c[0], c[1]), glm::max(c[2], c[3]));
+        return f;
+    }
+
+    // The texel holding A's centre (the point query), wrapped into the map.
+    std::uint32_t center_texel(const footprint& f) const {
+        const glm::dvec2 c = f.o + 0.5 * (f.e0 + f.e1);
+        const long x = static_cast<long>(std::floor(c.x)), y = static_cast<long>(std::floor(c.y));
+        const long wx = ((x % w_) + w_) % w_, wy = ((y % h_) + h_) % h_;
+        return static_cast<std::uint32_t>(wx) + static_cast<std::uint32_t>(wy) * static_cast<std::uint32_t>(w_);
+    }
+
+    // texel_center's rule: the x-interval [xa, xb) of A at height y (a point is in A when its x
+    // is); the same arithmetic for every query of the same footprint.
+    static void row_interval(const footprint& f, double y, double& xa, double& xb) {
+        xa = -std::numeric_limits<double>::infinity(), xb = std::numeric_limits<double>::infinity();
+        const double dy = y - f.o.y;
+        const glm::dvec2 rows[2] = {f.ia, f.ib};
+        for (const glm::dvec2& r : rows) {
+            // 0 <= r.x (x - o.x) + r.y dy < 1
+            const double c = r.y * dy;
+            if (r.x == 0) {
+                if (!(c >= 0 && c < 1)) xa = 1, xb = 0;
+                continue;
+            }
+            double t0 = -c / r.x + f.o.x, t1 = (1 - c) / r.x + f.o.x;
+            if (r.x < 0) std::swap(t0, t1);
+            xa = std::max(xa, t0), xb = std::min(xb, t1);
+        }
+    }
+    // The first integer x with x + 1/2 >= v (the comparison centre_in makes, so that rounding in
+    // v - 1/2 cannot move a centre across the interval's end).
+    static double first_centre(double v) {
+        double x = std::ceil(v - 0.5);
+        while (x - 1 + 0.5 >= v) x -= 1;
+        while (x + 0.5 < v) x += 1;
+        return x;
+    }
+    // How many centres x + 1/2 (x an integer) lie in [xa, xb).
+    static double centres_in(double xa, double xb) {
+        if (!(xb > xa)) return 0;
+        return std::max(0.0, first_centre(xb) - first_centre(xa));
+    }
+    static bool centre_in(const footprint& f, double gx, double gy) {
+        double xa, xb;
+        row_interval(f, gy + 0.5, xa, xb);
+        return gx + 0.5 >= xa && gx + 0.5 < xb;
+    }
+
+    // The number of texel centres in A (texel_center's normaliser): one pass over its rows.
+    double centre_total(const footprint& f) const {
+        double total = 0;
+        const double y0 = std::ceil(f.lo.y - 0.5), y1 = std::floor(f.hi.y - 0.5);
+        for (double y = y0; y <= y1; y += 1) {
+            double xa, xb;
+            row_interval(f, y + 0.5, xa, xb);
+            total += centres_in(xa, xb);
+        }
+        return total;
+    }
+
+    // Whether a box lies inside A, outside it, or across its boundary (separating axes: the
+    // box's, then A's edge normals through (a, b) at the box's corners).
+    enum class overlap { outside, inside, boundary };
+    static overlap classify(const footprint& f, double x0, double y0, double x1, double y1) {
+        if (x1 <= f.lo.x || x0 >= f.hi.x || y1 <= f.lo.y || y0 >= f.hi.y) return overlap::outside;
+        const glm::dvec2 d0(x0 - f.o.x, y0 - f.o.y);
+        const double a00 = glm::dot(f.ia, d0), b00 = glm::dot(f.ib, d0);
+        const double dax = f.ia.x * (x1 - x0), day = f.ia.y * (y1 - y0), dbx = f.ib.x * (x1 - x0), dby = f.ib.y * (y1 - y0);
+        const double amin = a00 + std::min(0.0, dax) + std::min(0.0, day), amax = a00 + std::max(0.0, dax) + std::max(0.0, day);
+        const double bmin = b00 + std::min(0.0, dbx) + std::min(0.0, dby), bmax = b00 + std::max(0.0, dbx) + std::max(0.0, dby);
+        if (amax <= 0 || amin >= 1 || bmax <= 0 || bmin >= 1) return overlap::outside;
+        if (amin >= 0 && amax <= 1 && bmin >= 0 && bmax <= 1) return overlap::inside;
+        return overlap::boundary;
+    }
+
+    // |A n [x, x+1] x [y, y+1]|: the texel's square clipped by A's four half-planes
+    // (Sutherland-Hodgman) in texel-local coordinates, then the shoelace formula.
+    static double texel_area(const footprint& f, double x, double y) {
+        double px[12] = {0, 1, 1, 0}, py[12] = {0, 0, 1, 1}, qx[12], qy[12];
+        int count = 4;
+        const glm::dvec2 d0(x - f.o.x, y - f.o.y);
+        const double a0 = glm::dot(f.ia, d0), b0 = glm::dot(f.ib, d0);
+        // Half-planes g(p) = c + gx px + gy py >= 0.
+        const double planes[4][3] = {{a0, f.ia.x, f.ia.y}, {1 - a0, -f.ia.x, -f.ia.y}, {b0, f.ib.x, f.ib.y}, {1 - b0, -f.ib.x, -f.ib.y}};
+        for (const auto& g : planes) {
+            int out = 0;
+            for (int i = 0; i < count; ++i) {
+                const int k = i + 1 == count ? 0 : i + 1;
+                const double vi = g[0] + g[1] * px[i] + g[2] * py[i], vk = g[0] + g[1] * px[k] + g[2] * py[k];
+                if (vi >= 0) qx[out] = px[i], qy[out] = py[i], ++out;
+                if ((vi >= 0) != (vk >= 0)) {
+                    const double t = vi / (vi - vk);
+                    qx[out] = px[i] + t * (px[k] - px[i]), qy[out] = py[i] + t * (py[k] - py[i]), ++out;
+                }
+            }
+            count = out;
+            for (int i = 0; i < count; ++i) px[i] = qx[i], py[i] = qy[i];
+            if (count == 0) return 0;
+        }
+        double s = 0;
+        for (int i = 0; i < count; ++i) {
+            const int k = i + 1 == count ? 0 : i + 1;
+            s += px[i] * py[k] - px[k] * py[i];
+        }
+        return std::fabs(0.5 * s);
+    }
+
+    // The summed weight of bin j's texels in A (exact: areas; centre: counts), over every tile
+    // copy A touches.
+    double bin_weight(const footprint& f, std::uint32_t j, bool exact) const {
+        const std::uint32_t begin = offset_[j], end = offset_[j + 1];
+        if (begin == end) return 0;
+        const double tx0 = std::floor(f.lo.x / w_), tx1 = std::floor(f.hi.x / w_), ty0 = std::floor(f.lo.y / h_), ty1 = std::floor(f.hi.y / h_);
+        double sum = 0;
+        for (double ty = ty0; ty <= ty1; ty += 1)
+            for (double tx = tx0; tx <= tx1; tx += 1) sum += copy_weight(f, j, begin, end, tx * w_, ty * h_, exact);
+        return sum;
+    }
+
+    // One tile copy, whose texel (x, y) sits at (x + ox, y + oy): the tree walk of bin j's list.
+    double copy_weight(const footprint& f, std::uint32_t j, std::uint32_t begin, std::uint32_t end, double ox, double oy, bool exact) const {
+        struct item {
+            region r;
+            std::uint32_t node, begin, end;
+        };
+        item stack[stack_size];
+        int top = 0;
+        const std::uint32_t leaf = static_cast<std::uint32_t>(o_.leaf_size);
+        stack[top++] = {{0, 0, w_, h_}, end - begin > leaf ? root_[j] : no_node, begin, end};
+        double sum = 0;
+        while (top > 0) {
+            const item it = stack[--top];
+            const overlap c = classify(f, ox + it.r.x, oy + it.r.y, ox + it.r.x + it.r.w, oy + it.r.y + it.r.h);
+            if (c == overlap::outside) continue;
+            if (c == overlap::inside) {
+                sum += it.end - it.begin;
+                continue;
+            }
+            if (it.node == no_node) {
+                for (std::uint32_t i = it.begin; i < it.end; ++i) {
+                    const std::uint32_t t = texels_[i];
+                    const double x = ox + static_cast<double>(t & 0xffffu), y = oy + static_cast<double>(t >> 16);
+                    if (exact) {
+                        const overlap ct = classify(f, x, y, x + 1, y + 1);
+                        sum += ct == overlap::inside ? 1.0 : ct == overlap::outside ? 0.0 : texel_area(f, x, y);
+                    } else {
+                        sum += centre_in(f, x, y) ? 1.0 : 0.0;
+                    }
+                }
+                continue;
+            }
+            region c0, c1;
+            split(it.r, c0, c1);
+            const std::uint32_t mid = nodes_[it.node].mid;
+            if (it.end > mid) stack[top++] = {c1, it.end - mid > leaf ? nodes_[it.node].child1 : no_node, mid, it.end};
+            if (mid > it.begin) stack[top++] = {c0, mid - it.begin > leaf ? it.node + 1 : no_node, it.begin, mid};
+        }
+        return sum;
+    }
+
+    // Whether A touches more tile copies than max_tile_copies (its coverages are then the global
+    // histogram).
+    bool beyond_copies(const footprint& f) const {
+        const double tx = std::floor(f.hi.x / w_) - std::floor(f.lo.x / w_) + 1, ty = std::floor(f.hi.y / h_) - std::floor(f.lo.y / h_) + 1;
+        return tx * ty > o_.max_tile_copies;
+    }
+
+    double coverage_of(const footprint& f, std::uint32_t j) const {
+        const bool exact = o_.rule == coverage_rule::exact_area;
+        if (f.point) return texel_bin_index(center_texel(f)) == j ? 1 : 0;
+        if (beyond_copies(f)) return static_cast<double>(bin_texels(j)) / static_cast<double>(stats_.texels);
+        const double total = exact ? f.area : centre_total(f);
+        if (!(total > 0)) return texel_bin_index(center_texel(f)) == j ? 1 : 0;  // texel_center: no centre in A
+        return bin_weight(f, j, exact) / total;
+    }
+
+    std::uint32_t texel_bin_index(std::uint32_t k) const { return wide_bins_ ? bin32_[k] : bin16_[k]; }
+
+    glm::dvec3 bin_center_d(std::uint32_t j) const {
+        const std::uint32_t n = static_cast<std::uint32_t>(n_);
+        return square_to_hemisphere(glm::dvec2((j % n) + 0.5, (j / n) + 0.5) / static_cast<double>(n_));
+    }
+
+    // An angular bound on the distance from a cell's centre to any point of the cell: 2.7 / n rad
+    // (2.61 / n measured by sampling the cells' boundaries for n = 1 to 512; tests/unit/test_bin_map.cpp
+    // checks it), at most pi.
+    static double cell_radius(int n) { return std::min(pi(), 2.7 / n); }
+    // How many cells from its bin a lobe's cap (plus one cell radius) may reach: angles map to the
+    // square with at most 4 / pi (the concentric map along rings) times sqrt(2) (the Lambert map
+    // radially at the horizon) per unit, and a cell is 1 / n wide.
+    static double lobe_reach_cells(const bin_map_options& o) {
+        const double cap = std::atan(o.alpha * std::sqrt(std::log(1 / o.epsilon)));
+        return (cap + cell_radius(o.bins_per_side)) * o.bins_per_side * (4 / pi()) * std::sqrt(2.0) * 0.5 + 1;
+    }
+
+    // A tangent frame around n (Duff et al. 2017).
+    static void basis(const glm::dvec3& n, glm::dvec3& t, glm::dvec3& b) {
+        const double sign = std::copysign(1.0, n.z), a = -1 / (sign + n.z), c = n.x * n.y * a;
+        t = {1 + sign * n.x * n.x * a, sign * c, -sign * n.x};
+        b = {c, sign + n.y * n.y * a, -n.y};
+    }
+
+    // The truncated, renormalised Beckmann lobe around m, per solid angle, at h.
+    double lobe(const glm::dvec3& m, const glm::dvec3& h) const {
+        const double c = glm::dot(m, h);
+        if (!(c >= cos_cap_)) return 0;
+        const double a2 = o_.alpha * o_.alpha, c2 = c * c, tan2 = (1 - c2) / c2;
+        return std::exp(-tan2 / a2) / (pi() * a2 * c2 * c) / (1 - o_.epsilon);
+    }
+
+    double pdf_of(const footprint& f, const glm::dvec3& h) const {
+        const double density = static_cast<double>(bin_count()) / (2 * pi());  // per solid angle, of c_j = 1
+        const glm::dvec2 q = hemisphere_to_square(h);
+        if (o_.kernel == bin_kernel::box) {
+            const int ix = std::clamp(static_cast<int>(q.x * n_), 0, n_ - 1), iy = std::clamp(static_cast<int>(q.y * n_), 0, n_ - 1);
+            return coverage_of(f, static_cast<std::uint32_t>(ix + iy * n_)) * density;
+        }
+        if (o_.kernel == bin_kernel::tent) {
+            // Bilinear between cell centres, clamped at the edges: taps that clamp to the same cell
+            // are read once.
+            const double gx = q.x * n_ - 0.5, gy = q.y * n_ - 0.5;
+            const double fx = std::floor(gx), fy = std::floor(gy), tx = gx - fx, ty = gy - fy;
+            const int x0 = std::clamp(static_cast<int>(fx), 0, n_ - 1), x1 = std::clamp(static_cast<int>(fx) + 1, 0, n_ - 1);
+            const int y0 = std::clamp(static_cast<int>(fy), 0, n_ - 1), y1 = std::clamp(static_cast<int>(fy) + 1, 0, n_ - 1);
+            const auto c = [&](int x, int y) { return coverage_of(f, static_cast<std::uint32_t>(x + y * n_)); };
+            const double c00 = c(x0, y0), c10 = x1 == x0 ? c00 : c(x1, y0);
+            const double c01 = y1 == y0 ? c00 : c(x0, y1), c11 = x1 == x0 ? c01 : y1 == y0 ? c10 : c(x1, y1);
+            return density * ((1 - ty) * ((1 - tx) * c00 + tx * c10) + ty * ((1 - tx) * c01 + tx * c11));
+        }
+        // beckmann: every bin whose centre is within the cap of h, found by a flood fill over the
+        // cells from h's own; a cell joins the fill while its centre is within the cap plus one
+        // cell radius (the cells along the great circle from h to any centre in the cap do), in a
+        // 64 x 64 window (check_options bounds the reach by 30 cells).
+        const int hx = std::clamp(static_cast<int>(q.x * n_), 0, n_ - 1), hy = std::clamp(static_cast<int>(q.y * n_), 0, n_ - 1);
+        std::uint64_t seen[64] = {};
+        std::uint16_t stack[64 * 64];
+        int top = 0;
+        const auto visit = [&](int x, int y) {
+            if (x < 0 || y < 0 || x >= n_ || y >= n_) return;
+            const int lx = x - hx + 32, ly = y - hy + 32;
+            if (lx < 0 || ly < 0 || lx >= 64 || ly >= 64) return;
+            if (seen[ly] >> lx & 1u) return;
+            seen[ly] |= std::uint64_t(1) << lx;
+            stack[top++] = static_cast<std::uint16_t>(lx + 64 * ly);
+        };
+        visit(hx, hy);
+        double sum = 0;
+        while (top > 0) {
+            const int l = stack[--top];
+            const int x = l % 64 + hx - 32, y = l / 64 + hy - 32;
+            const std::uint32_t j = static_cast<std::uint32_t>(x + y * n_);
+            const glm::dvec3 m = bin_center_d(j);
+            const double c = glm::dot(m, h);
+            if (!(c >= cos_reach_)) continue;
+            if (c >= cos_cap_ && bin_texels(j) > 0) {
+                const double k = lobe(m, h);
+                if (k > 0) sum += coverage_of(f, j) * k;
+            }
+            for (int dy = -1; dy <= 1; ++dy)
+                for (int dx = -1; dx <= 1; ++dx) visit(x + dx, y + dy);
+        }
+        return sum;
+    }
+
+    // The bin of a texel drawn by its weight in A (u in [0, 1)^2).
+    std::uint32_t sample_texel_bin(const footprint& f, glm::dvec2 u) const {
+        u = glm::clamp(u, 0.0, std::nextafter(1.0, 0.0));
+        if (f.point) return texel_bin_index(center_texel(f));
+        if (beyond_copies(f))  // the global histogram: a uniform texel of the map
+            return texel_bin(std::min(static_cast<int>(u.x * w_), w_ - 1), std::min(static_cast<int>(u.y * h_), h_ - 1));
+        if (o_.rule == coverage_rule::exact_area) {
+            const glm::dvec2 p = f.o + u.x * f.e0 + u.y * f.e1;
+            long x = static_cast<long>(std::floor(p.x)), y = static_cast<long>(std::floor(p.y));
+            x = ((x % w_) + w_) % w_, y = ((y % h_) + h_) % h_;
+            return texel_bin_index(static_cast<std::uint32_t>(x) + static_cast<std::uint32_t>(y) * static_cast<std::uint32_t>(w_));
+        }
+        // texel_center: the k-th centre in A, k uniform, counting row by row as centre_total does.
+        const double total = centre_total(f);
+        if (!(total > 0)) return texel_bin_index(center_texel(f));
+        double k = std::floor(u.x * total);
+        const double y0 = std::ceil(f.lo.y - 0.5), y1 = std::floor(f.hi.y - 0.5);
+        for (double y = y0; y <= y1; y += 1) {
+            double xa, xb;
+            row_interval(f, y + 0.5, xa, xb);
+            const double c = centres_in(xa, xb);
+            if (k < c) {
+                const long x = static_cast<long>(first_centre(xa) + k), yy = static_cast<long>(y);
+                const long wx = ((x % w_) + w_) % w_, wy = ((yy % h_) + h_) % h_;
+                return texel_bin_index(static_cast<std::uint32_t>(wx) + static_cast<std::uint32_t>(wy) * static_cast<std::uint32_t>(w_));
+            }
+            k -= c;
+        }
+        return texel_bin_index(center_texel(f));  // not reached: k < total
+    }
+
+    bin_map_options o_;
+    int n_ = 1, w_ = 0, h_ = 0;
+    bool wide_bins_ = false;
+    double cos_cap_ = 1, cos_reach_ = 1;
+    std::vector<std::uint16_t> bin16_;
+    std::vector<std::uint32_t> bin32_;
+    std::vector<std::uint32_t> offset_, texels_, root_;
+    std::vector<node> nodes_;
+    bin_map_statistics stats_;
+};
+
+}  // namespace glint

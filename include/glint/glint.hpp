@@ -3,3 +3,14 @@
 #pragma once
 
 #include "glint/core.hpp"
+#include "glint/binomial.hpp"
+#include "glint/multinomial.hpp"
+#include "glint/microfacet.hpp"
+#include "glint/grid.hpp"
+#include "glint/ibl.hpp"
+#include "glint/normal_map.hpp"
+#include "glint/patterns.hpp"
+#include "glint/gaussian.hpp"
+#include "glint/scratch.hpp"
+#include "glint/ndf_map.hpp"
+#include "glint/bin_map.hpp"

@@ -89,6 +89,10 @@ struct bin_map_options {
     int leaf_size = 16;                            // L (AKKW Sec. 2.3: 16): lists this short are scanned, [1, 2^20]
     coverage_rule rule = coverage_rule::exact_area;
     int max_tile_copies = 256;                     // [1, 2^20]; beyond: the global histogram
+    // Footprints whose bounding box holds at most this many texels visit them directly instead of
+    // walking trees (the same weights, so the same results up to the order of the sums); -1: the
+    // default per kernel (see bin_map::direct), 0: always walk. [-1, 2^20]
+    int direct_texels = -1;
 };
 
 // A footprint in uv (the texture is [0, 1)^2, repeated): { origin + a e0 + b e1 : a, b in [0, 1) }.
@@ -151,6 +155,7 @@ public:
             bad("bins_per_side " + std::to_string(o.bins_per_side) + " is outside [1, " + std::to_string(max_bins_per_side) + "]");
         if (o.leaf_size < 1 || o.leaf_size > (1 << 20)) bad("leaf_size " + std::to_string(o.leaf_size) + " is outside [1, 2^20]");
         if (o.max_tile_copies < 1 || o.max_tile_copies > (1 << 20)) bad("max_tile_copies " + std::to_string(o.max_tile_copies) + " is outside [1, 2^20]");
+        if (o.direct_texels < -1 || o.direct_texels > (1 << 20)) bad("direct_texels " + std::to_string(o.direct_texels) + " is outside [-1, 2^20]");
         if (o.kernel == bin_kernel::beckmann) {
             if (!(o.alpha >= 0.0025 && o.alpha <= 0.5)) bad("alpha " + std::to_string(o.alpha) + " is outside [0.0025, 0.5]");
             if (!(o.epsilon >= 1e-4 && o.epsilon <= 0.2)) bad("epsilon " + std::to_string(o.epsilon) + " is outside [1e-4, 0.2]");
@@ -177,6 +182,11 @@ public:
             const double tan2 = options.alpha * options.alpha * std::log(1 / options.epsilon);
             m.cos_cap_ = 1 / std::sqrt(1 + tan2);
             m.cos_reach_ = std::cos(std::min(std::acos(m.cos_cap_) + cell_radius(m.n_), pi()));
+            if (bins <= (std::size_t(1) << 20)) {
+                std::vector<glm::dvec3> c(bins);
+                for (std::size_t j = 0; j < bins; ++j) c[j] = m.bin_center_d(static_cast<std::uint32_t>(j));
+                m.centres_ = std::move(c);
+            }
         }
 
         // Bin of every texel (the normal's, AKKW Sec. 2.1), and the counts per bin.
@@ -193,60 +203,47 @@ public:
         for (std::size_t j = 0; j < bins; ++j) count[j + 1] += count[j];
         for (std::size_t j = 0; j <= bins; ++j) m.offset_[j] = count[j];
 
-        // The texels in the preorder of the implicit tree, and each texel's rank in it.
-        std::vector<std::uint32_t> order(texels), rank(texels);
+        // The texels in the preorder of the implicit tree, each scattered into its bin's list as it
+        // comes (a counting sort by bin, stable: each list stays in preorder).
+        m.texels_.resize(texels);
         {
-            std::size_t next = 0;
             region stack[stack_size];
+            int depth[stack_size];
             int top = 0;
-            stack[top++] = {0, 0, m.w_, m.h_};
-            int depth = 0;
-            std::vector<int> depth_stack;  // only to report the depth: parallel to stack
-            depth_stack.assign(stack_size, 0);
+            stack[top] = {0, 0, m.w_, m.h_}, depth[top++] = 0;
             while (top > 0) {
                 --top;
                 const region r = stack[top];
-                const int d = depth_stack[static_cast<std::size_t>(top)];
-                depth = std::max(depth, d);
+                const int d = depth[top];
                 if (r.w == 1 && r.h == 1) {
                     const std::uint32_t k = static_cast<std::uint32_t>(r.x) + static_cast<std::uint32_t>(r.y) * static_cast<std::uint32_t>(m.w_);
-                    rank[k] = static_cast<std::uint32_t>(next);
-                    order[next++] = k;
+                    m.texels_[count[m.texel_bin_index(k)]++] = (static_cast<std::uint32_t>(r.y) << 16) | static_cast<std::uint32_t>(r.x);
+                    m.stats_.depth = std::max(m.stats_.depth, d);
                     continue;
                 }
                 region c0, c1;
                 split(r, c0, c1);
-                depth_stack[static_cast<std::size_t>(top)] = d + 1, stack[top++] = c1;
-                depth_stack[static_cast<std::size_t>(top)] = d + 1, stack[top++] = c0;
+                stack[top] = c1, depth[top++] = d + 1;
+                stack[top] = c0, depth[top++] = d + 1;
             }
-            m.stats_.depth = depth;
         }
-        // Counting sort by bin, stable: each bin's list stays in preorder.
-        m.texels_.resize(texels);
-        for (std::size_t r = 0; r < texels; ++r) {
-            const std::uint32_t k = order[r];
-            const std::uint32_t j = m.texel_bin_index(k);
-            const std::uint32_t x = k % static_cast<std::uint32_t>(m.w_), y = k / static_cast<std::uint32_t>(m.w_);
-            m.texels_[count[j]++] = (y << 16) | x;
-        }
-        order.clear(), order.shrink_to_fit();
 
-        // One tree per list longer than leaf_size, over the implicit splits.
+        // One tree per list longer than leaf_size, over the implicit splits. A node's texels lie in
+        // its region and in preorder, so child 0's come first: those left of (or above) the cut.
         const std::uint32_t leaf = static_cast<std::uint32_t>(options.leaf_size);
         m.root_.assign(bins, no_node);
         struct pending {
             region r;
-            std::uint32_t first_rank, begin, end, parent;  // parent: node whose child-1 index to set, or no_node
+            std::uint32_t begin, end, parent;  // parent: node whose child-1 index to set, or no_node
         };
         std::vector<pending> work;
-        const auto rank_of = [&](std::uint32_t packed) { return rank[(packed & 0xffffu) + (packed >> 16) * static_cast<std::uint32_t>(m.w_)]; };
         for (std::size_t j = 0; j < bins; ++j) {
             const std::uint32_t b = m.offset_[j], e = m.offset_[j + 1];
             if (e > b) ++m.stats_.nonempty_bins;
             if (e - b <= leaf) continue;
             ++m.stats_.trees;
             m.root_[j] = static_cast<std::uint32_t>(m.nodes_.size());
-            work.push_back({{0, 0, m.w_, m.h_}, 0, b, e, no_node});
+            work.push_back({{0, 0, m.w_, m.h_}, b, e, no_node});
             while (!work.empty()) {
                 const pending p = work.back();
                 work.pop_back();
@@ -254,14 +251,15 @@ public:
                 if (p.parent != no_node) m.nodes_[p.parent].child1 = index;
                 region c0, c1;
                 split(p.r, c0, c1);
-                const std::uint32_t split_rank = p.first_rank + static_cast<std::uint32_t>(c0.w) * static_cast<std::uint32_t>(c0.h);
+                const bool along_x = c1.x != c0.x;
+                const std::uint32_t cut = static_cast<std::uint32_t>(along_x ? c1.x : c1.y);
                 const std::uint32_t* base = m.texels_.data();
                 const std::uint32_t mid = static_cast<std::uint32_t>(
-                    std::partition_point(base + p.begin, base + p.end, [&](std::uint32_t t) { return rank_of(t) < split_rank; }) - base);
+                    std::partition_point(base + p.begin, base + p.end, [&](std::uint32_t t) { return (along_x ? t & 0xffffu : t >> 16) < cut; }) - base);
                 m.nodes_.push_back({mid, no_node});
                 // Child 0's subtree follows its parent (preorder); child 1's index is set when it is made.
-                if (p.end - mid > leaf) work.push_back({c1, split_rank, mid, p.end, index});
-                if (mid - p.begin > leaf) work.push_back({c0, p.first_rank, p.begin, mid, no_node});
+                if (p.end - mid > leaf) work.push_back({c1, mid, p.end, index});
+                if (mid - p.begin > leaf) work.push_back({c0, p.begin, mid, no_node});
             }
         }
         m.stats_.texels = texels, m.stats_.bins = bins, m.stats_.nodes = m.nodes_.size();
@@ -277,9 +275,7 @@ public:
 
     // The bin holding direction h (z >= 0; below the horizon it is clamped onto it).
     std::uint32_t bin_of(const vec3& h) const {
-        const glm::dvec2 q = hemisphere_to_square(glm::dvec3(h));
-        const int ix = std::clamp(static_cast<int>(q.x * n_), 0, n_ - 1), iy = std::clamp(static_cast<int>(q.y * n_), 0, n_ - 1);
-        return static_cast<std::uint32_t>(ix) + static_cast<std::uint32_t>(iy) * static_cast<std::uint32_t>(n_);
+        return cell_of(hemisphere_to_square(glm::dvec3(h)));
     }
     vec3 bin_center(std::uint32_t j) const { return vec3(bin_center_d(j)); }
 
@@ -319,7 +315,8 @@ public:
     // Texels per bin (the global histogram times the texel count).
     std::uint32_t bin_texels(std::uint32_t j) const { return offset_[j + 1] - offset_[j]; }
     std::size_t memory_bytes() const {
-        return bin16_.size() * 2 + bin32_.size() * 4 + texels_.size() * 4 + offset_.size() * 4 + root_.size() * 4 + nodes_.size() * sizeof(node);
+        return bin16_.size() * 2 + bin32_.size() * 4 + texels_.size() * 4 + offset_.size() * 4 + root_.size() * 4 + nodes_.size() * sizeof(node) +
+               centres_.size() * sizeof(glm::dvec3);
     }
     const bin_map_statistics& statistics() const { return stats_; }
 
@@ -569,7 +566,22 @@ private:
         item stack[stack_size];
         int top = 0;
         const std::uint32_t leaf = static_cast<std::uint32_t>(o_.leaf_size);
-        stack[top++] = {{0, 0, w_, h_}, end - begin > leaf ? root_[j] : no_node, begin, end};
+        // Down the nodes whose one child holds all of A's bounding box, without the stack or the
+        // separating-axis tests.
+        item top_item{{0, 0, w_, h_}, end - begin > leaf ? root_[j] : no_node, begin, end};
+        const double lx = f.lo.x - ox, hx = f.hi.x - ox, ly = f.lo.y - oy, hy = f.hi.y - oy;
+        while (top_item.node != no_node) {
+            region c0, c1;
+            split(top_item.r, c0, c1);
+            const bool along_x = c1.x != c0.x;
+            const double cut = along_x ? c1.x : c1.y, lo = along_x ? lx : ly, hi = along_x ? hx : hy;
+            const node& nd = nodes_[top_item.node];
+            if (hi <= cut) top_item = {c0, nd.mid - top_item.begin > leaf ? top_item.node + 1 : no_node, top_item.begin, nd.mid};
+            else if (lo >= cut) top_item = {c1, top_item.end - nd.mid > leaf ? nd.child1 : no_node, nd.mid, top_item.end};
+            else break;
+            if (top_item.begin == top_item.end) return 0;
+        }
+        stack[top++] = top_item;
         double sum = 0;
         while (top > 0) {
             const item it = stack[--top];
@@ -620,6 +632,7 @@ private:
     std::uint32_t texel_bin_index(std::uint32_t k) const { return wide_bins_ ? bin32_[k] : bin16_[k]; }
 
     glm::dvec3 bin_center_d(std::uint32_t j) const {
+        if (!centres_.empty()) return centres_[j];
         const std::uint32_t n = static_cast<std::uint32_t>(n_);
         return square_to_hemisphere(glm::dvec2((j % n) + 0.5, (j / n) + 0.5) / static_cast<double>(n_));
     }
@@ -651,30 +664,132 @@ private:
         return std::exp(-tan2 / a2) / (pi() * a2 * c2 * c) / (1 - o_.epsilon);
     }
 
-    double pdf_of(const footprint& f, const glm::dvec3& h) const {
-        const double density = static_cast<double>(bin_count()) / (2 * pi());  // per solid angle, of c_j = 1
-        const glm::dvec2 q = hemisphere_to_square(h);
-        if (o_.kernel == bin_kernel::box) {
-            const int ix = std::clamp(static_cast<int>(q.x * n_), 0, n_ - 1), iy = std::clamp(static_cast<int>(q.y * n_), 0, n_ - 1);
-            return coverage_of(f, static_cast<std::uint32_t>(ix + iy * n_)) * density;
+    // Whether A's bounding box holds few enough texels that visiting each of them costs less than
+    // the kernel's tree walks (direct_texels, or by default 64 per walk the kernel needs at
+    // least: box 1, tent 4, beckmann 16; the crossovers measured in docs/bin_map.md).
+    bool direct(const footprint& f) const {
+        if (f.point || beyond_copies(f)) return false;
+        const double limit = o_.direct_texels >= 0 ? o_.direct_texels : o_.kernel == bin_kernel::box ? 64 : o_.kernel == bin_kernel::tent ? 256 : 1024;
+        return (std::floor(f.hi.x) - std::floor(f.lo.x) + 1) * (std::floor(f.hi.y) - std::floor(f.lo.y) + 1) <= limit;
+    }
+
+    // The sum over the texels under A's bounding box of their weight in A times factor(their
+    // bin), and the normaliser (|A|, or the number of centres in A) in `total`: the same weights
+    // as the tree walks (only the order of the sums differs). A weight is computed only where
+    // the factor is not 0, except the centres that texel_center's normaliser counts.
+    template <class Factor>
+    double texel_sum(const footprint& f, Factor&& factor, double& total) const {
+        const bool exact = o_.rule == coverage_rule::exact_area;
+        double sum = 0, centres = 0;
+        const long x0 = static_cast<long>(std::floor(f.lo.x)), x1 = static_cast<long>(std::floor(f.hi.x));
+        const long y0 = static_cast<long>(std::floor(f.lo.y)), y1 = static_cast<long>(std::floor(f.hi.y));
+        for (long y = y0; y <= y1; ++y) {
+            const std::uint32_t row = static_cast<std::uint32_t>(((y % h_) + h_) % h_) * static_cast<std::uint32_t>(w_);
+            long wx = ((x0 % w_) + w_) % w_;
+            for (long x = x0; x <= x1; ++x, wx = wx + 1 == w_ ? 0 : wx + 1) {
+                const double gx = static_cast<double>(x), gy = static_cast<double>(y);
+                const double k = factor(texel_bin_index(row + static_cast<std::uint32_t>(wx)));
+                if (exact) {
+                    if (k == 0) continue;
+                    const overlap c = classify(f, gx, gy, gx + 1, gy + 1);
+                    sum += k * (c == overlap::inside ? 1.0 : c == overlap::outside ? 0.0 : texel_area(f, gx, gy));
+                } else if (centre_in(f, gx, gy)) {
+                    centres += 1, sum += k;
+                }
+            }
         }
+        total = exact ? f.area : centres;
+        return sum;
+    }
+
+    // pdf_of through texel_sum (direct(f) holds).
+    double pdf_direct(const footprint& f, const glm::dvec3& h, const glm::dvec2& q) const {
+        const double density = static_cast<double>(bin_count()) / (2 * pi());
+        double sum, total;
+        if (o_.kernel == bin_kernel::box) {
+            const std::uint32_t jb = cell_of(q);
+            sum = density * texel_sum(f, [&](std::uint32_t b) { return b == jb ? 1.0 : 0.0; }, total);
+        } else if (o_.kernel == bin_kernel::tent) {
+            std::uint32_t bins[4];
+            double weights[4];
+            const int taps = tent_taps(q, bins, weights);
+            sum = density * texel_sum(
+                                f,
+                                [&](std::uint32_t b) {
+                                    for (int i = 0; i < taps; ++i)
+                                        if (b == bins[i]) return weights[i];
+                                    return 0.0;
+                                },
+                                total);
+        } else {
+            const std::uint32_t jh = cell_of(q), n = static_cast<std::uint32_t>(n_);
+            const int hx = static_cast<int>(jh % n), hy = static_cast<int>(jh / n);
+            std::uint32_t last = no_node;
+            double last_k = 0;
+            sum = texel_sum(
+                f,
+                [&](std::uint32_t b) {
+                    if (b != last) {
+                        // Bins farther than the lobe's reach (check_options: 30 cells) cannot hold h.
+                        const int bx = static_cast<int>(b % n), by = static_cast<int>(b / n);
+                        last = b, last_k = std::abs(bx - hx) <= 31 && std::abs(by - hy) <= 31 ? lobe(bin_center_d(b), h) : 0.0;
+                    }
+                    return last_k;
+                },
+                total);
+        }
+        if (!(total > 0)) return pdf_taps(f, h, q);  // texel_center with no centre in A: the point query
+        return sum / total;
+    }
+
+    // The bin cell holding the square's point q.
+    std::uint32_t cell_of(const glm::dvec2& q) const {
+        const int ix = std::clamp(static_cast<int>(q.x * n_), 0, n_ - 1), iy = std::clamp(static_cast<int>(q.y * n_), 0, n_ - 1);
+        return static_cast<std::uint32_t>(ix) + static_cast<std::uint32_t>(iy) * static_cast<std::uint32_t>(n_);
+    }
+
+    // The tent's bilinear taps at q: the (up to 4) distinct cells between whose centres q lies,
+    // clamped at the square's edges, with their weights (taps that clamp to one cell merged).
+    int tent_taps(const glm::dvec2& q, std::uint32_t* bins, double* weights) const {
+        const double gx = q.x * n_ - 0.5, gy = q.y * n_ - 0.5;
+        const double fx = std::floor(gx), fy = std::floor(gy), tx = gx - fx, ty = gy - fy;
+        const int xs[2] = {std::clamp(static_cast<int>(fx), 0, n_ - 1), std::clamp(static_cast<int>(fx) + 1, 0, n_ - 1)};
+        const int ys[2] = {std::clamp(static_cast<int>(fy), 0, n_ - 1), std::clamp(static_cast<int>(fy) + 1, 0, n_ - 1)};
+        const double wx[2] = {1 - tx, tx}, wy[2] = {1 - ty, ty};
+        int taps = 0;
+        for (int j = 0; j < 2; ++j)
+            for (int i = 0; i < 2; ++i) {
+                const std::uint32_t b = static_cast<std::uint32_t>(xs[i] + ys[j] * n_);
+                int k = 0;
+                while (k < taps && bins[k] != b) ++k;
+                if (k == taps) bins[taps] = b, weights[taps++] = 0;
+                weights[k] += wx[i] * wy[j];
+            }
+        return taps;
+    }
+
+    double pdf_of(const footprint& f, const glm::dvec3& h) const {
+        const glm::dvec2 q = hemisphere_to_square(h);
+        return direct(f) ? pdf_direct(f, h, q) : pdf_taps(f, h, q);
+    }
+
+    // pdf_of as the kernel's taps times their coverages, each from its bin's tree walk.
+    double pdf_taps(const footprint& f, const glm::dvec3& h, const glm::dvec2& q) const {
+        const double density = static_cast<double>(bin_count()) / (2 * pi());  // per solid angle, of c_j = 1
+        if (o_.kernel == bin_kernel::box) return coverage_of(f, cell_of(q)) * density;
         if (o_.kernel == bin_kernel::tent) {
-            // Bilinear between cell centres, clamped at the edges: taps that clamp to the same cell
-            // are read once.
-            const double gx = q.x * n_ - 0.5, gy = q.y * n_ - 0.5;
-            const double fx = std::floor(gx), fy = std::floor(gy), tx = gx - fx, ty = gy - fy;
-            const int x0 = std::clamp(static_cast<int>(fx), 0, n_ - 1), x1 = std::clamp(static_cast<int>(fx) + 1, 0, n_ - 1);
-            const int y0 = std::clamp(static_cast<int>(fy), 0, n_ - 1), y1 = std::clamp(static_cast<int>(fy) + 1, 0, n_ - 1);
-            const auto c = [&](int x, int y) { return coverage_of(f, static_cast<std::uint32_t>(x + y * n_)); };
-            const double c00 = c(x0, y0), c10 = x1 == x0 ? c00 : c(x1, y0);
-            const double c01 = y1 == y0 ? c00 : c(x0, y1), c11 = x1 == x0 ? c01 : y1 == y0 ? c10 : c(x1, y1);
-            return density * ((1 - ty) * ((1 - tx) * c00 + tx * c10) + ty * ((1 - tx) * c01 + tx * c11));
+            std::uint32_t bins[4];
+            double weights[4], sum = 0;
+            const int taps = tent_taps(q, bins, weights);
+            for (int i = 0; i < taps; ++i) sum += weights[i] * coverage_of(f, bins[i]);
+            return density * sum;
         }
         // beckmann: every bin whose centre is within the cap of h, found by a flood fill over the
         // cells from h's own; a cell joins the fill while its centre is within the cap plus one
         // cell radius (the cells along the great circle from h to any centre in the cap do), in a
         // 64 x 64 window (check_options bounds the reach by 30 cells).
-        const int hx = std::clamp(static_cast<int>(q.x * n_), 0, n_ - 1), hy = std::clamp(static_cast<int>(q.y * n_), 0, n_ - 1);
+        const std::uint32_t jh = cell_of(q);
+        const int hx = static_cast<int>(jh % static_cast<std::uint32_t>(n_)), hy = static_cast<int>(jh / static_cast<std::uint32_t>(n_));
         std::uint64_t seen[64] = {};
         std::uint16_t stack[64 * 64];
         int top = 0;
@@ -744,6 +859,7 @@ private:
     std::vector<std::uint32_t> bin32_;
     std::vector<std::uint32_t> offset_, texels_, root_;
     std::vector<node> nodes_;
+    std::vector<glm::dvec3> centres_;  // beckmann with B <= 2^20: the bins' centres, read by every lobe
     bin_map_statistics stats_;
 };
 

@@ -1,8 +1,8 @@
 // glint_normal_map: writes one of glint's procedural normal maps (glint/patterns.hpp) as a
 // 32-bit float OpenEXR file and a 16-bit PNG (OpenGL convention: green = +y up the image).
 //
-//   glint_normal_map --pattern brushed|noise|anisotropic_noise|flakes|pyramids|scratches|leather|sinusoid|flat|tilt|ramp
-//                    [--size WxH] [--seed N] [--slope S] [--feature F] [--out PATH.exr]
+//   glint_normal_map --pattern brushed|noise|anisotropic_noise|flakes|pyramids|scratches|leather|scratched_metal|sinusoid|flat|tilt|ramp
+//                    [--size WxH] [--seed N] [--slope S] [--feature F] [--count N] [--out PATH.exr]
 #include <cstdio>
 #include <cstdlib>
 #include <exception>
@@ -20,7 +20,7 @@ namespace {
 [[noreturn]] void usage(const std::string& problem) {
     std::fprintf(stderr,
                  "glint_normal_map: %s\n"
-                 "usage: glint_normal_map --pattern NAME [--size WxH] [--seed N] [--slope S] [--feature F] [--out PATH.exr]\n",
+                 "usage: glint_normal_map --pattern NAME [--size WxH] [--seed N] [--slope S] [--feature F] [--count N] [--out PATH.exr]\n",
                  problem.c_str());
     std::exit(2);
 }
@@ -39,6 +39,7 @@ int main(int argc, char** argv) {
         else if (a == "--seed") p.seed = static_cast<std::uint32_t>(parse_float(a, value(), 0, 4e9f, usage));
         else if (a == "--slope") p.slope_rms = static_cast<double>(parse_float(a, value(), 1e-4f, 1, usage));
         else if (a == "--feature") p.feature = static_cast<double>(parse_float(a, value(), 1, 4096, usage));
+        else if (a == "--count") p.count = static_cast<int>(parse_float(a, value(), 0, 1e6f, usage));
         else if (a == "--out") out = parse_exr_path(a, value(), usage);
         else if (a == "--help" || a == "-h") usage("writes a procedural normal map");
         else usage("unknown option '" + a + "'");

@@ -135,7 +135,7 @@ TEST_CASE("normal_map: bicubic approximates a smooth analytic field to third ord
 }
 
 TEST_CASE("patterns: periodic, analytic, valid normals; the noise's slope variance is exact") {
-    for (int kind = 0; kind <= static_cast<int>(glint::pattern::leather); ++kind) {
+    for (int kind = 0; kind <= static_cast<int>(glint::pattern::scratched_metal); ++kind) {
         glint::pattern_params p;
         p.kind = static_cast<glint::pattern>(kind);
         p.width = 48, p.height = 48, p.seed = 7;
@@ -193,4 +193,22 @@ TEST_CASE("patterns: periodic, analytic, valid normals; the noise's slope varian
     CHECK(contains(error_of([] { glint::parse_pattern("plaid"); }), "unknown pattern 'plaid' (one of: flat, tilt"));
     p.slope_rms = 0;
     CHECK(contains(error_of([&] { glint::make_normal_map(p); }), "slope_rms = 0"));
+}
+
+TEST_CASE("patterns: scratched_metal's map, summed segment by segment, is its normal at the texel centres") {
+    for (const int side : {3, 37, 128}) {
+        glint::pattern_params p;
+        p.kind = glint::pattern::scratched_metal, p.width = side, p.height = side + 5, p.count = 150, p.slope_rms = 0.15, p.seed = 4;
+        const glint::normal_map m = glint::make_normal_map(p);
+        int grooved = 0;
+        for (int y = 0; y < p.height; ++y)
+            for (int x = 0; x < side; ++x) {
+                const glm::vec3 n(glint::pattern_normal(p, glm::dvec2(x + 0.5, y + 0.5)));
+                CHECK(m.texel(x, y) == n);
+                grooved += n.z < 1 ? 1 : 0;
+            }
+        CAPTURE(side);
+        CHECK(grooved > 0);
+        CHECK(grooved < side * (side + 5));
+    }
 }

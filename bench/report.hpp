@@ -80,5 +80,6 @@ section ibl_section(double min_time);  // when built with GLINT_REPORT_IBL
 section microstructure_section(double min_time);
 section scratch_section(double min_time);
 section ndf_map_section(double min_time);
+section bin_map_section(double min_time);
 
 }  // namespace glint_report

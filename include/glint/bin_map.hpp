@@ -67,6 +67,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <cstring>
 #include <limits>
 #include <string>
 #include <vector>
@@ -126,7 +127,7 @@ struct bin_sample {
 };
 
 struct bin_map_statistics {
-    std::size_t texels = 0, bins = 0, nonempty_bins = 0, trees = 0, nodes = 0;
+    std::size_t texels = 0, bins = 0, nonempty_bins = 0;
     int depth = 0;          // of the implicit tree (levels below the root)
     double build_seconds = 0;
 };
@@ -177,7 +178,6 @@ public:
         m.w_ = map.width(), m.h_ = map.height();
         const std::size_t texels = static_cast<std::size_t>(m.w_) * static_cast<std::size_t>(m.h_);
         const std::size_t bins = static_cast<std::size_t>(m.n_) * static_cast<std::size_t>(m.n_);
-        m.wide_bins_ = bins > 65536;
         if (options.kernel == bin_kernel::beckmann) {
             const double tan2 = options.alpha * options.alpha * std::log(1 / options.epsilon);
             m.cos_cap_ = 1 / std::sqrt(1 + tan2);
@@ -190,22 +190,19 @@ public:
         }
 
         // Bin of every texel (the normal's, AKKW Sec. 2.1), and the counts per bin.
-        if (m.wide_bins_) m.bin32_.resize(texels);
-        else m.bin16_.resize(texels);
+        std::vector<std::uint32_t> bin(texels);
         std::vector<std::uint32_t> count(bins + 1, 0);
-        for (std::size_t k = 0; k < texels; ++k) {
-            const std::uint32_t j = m.bin_of(vec3(map.normals()[k]));
-            if (m.wide_bins_) m.bin32_[k] = j;
-            else m.bin16_[k] = static_cast<std::uint16_t>(j);
-            ++count[j + 1];
-        }
+        for (std::size_t k = 0; k < texels; ++k) ++count[(bin[k] = m.bin_of(vec3(map.normals()[k]))) + 1];
+        m.compress_bins(bin);
         m.offset_.resize(bins + 1);
         for (std::size_t j = 0; j < bins; ++j) count[j + 1] += count[j];
         for (std::size_t j = 0; j <= bins; ++j) m.offset_[j] = count[j];
 
         // The texels in the preorder of the implicit tree, each scattered into its bin's list as it
         // comes (a counting sort by bin, stable: each list stays in preorder).
-        m.texels_.resize(texels);
+        m.x_bits_ = m.w_ <= 4096 && m.h_ <= 4096 ? 12 : 16;
+        m.stride_ = m.x_bits_ == 12 ? 3 : 4;
+        m.list_.assign(texels * static_cast<std::size_t>(m.stride_) + 1, 0);  // + 1: entries are read 4 bytes at a time
         {
             region stack[stack_size];
             int depth[stack_size];
@@ -217,7 +214,9 @@ public:
                 const int d = depth[top];
                 if (r.w == 1 && r.h == 1) {
                     const std::uint32_t k = static_cast<std::uint32_t>(r.x) + static_cast<std::uint32_t>(r.y) * static_cast<std::uint32_t>(m.w_);
-                    m.texels_[count[m.texel_bin_index(k)]++] = (static_cast<std::uint32_t>(r.y) << 16) | static_cast<std::uint32_t>(r.x);
+                    const std::uint32_t packed = (static_cast<std::uint32_t>(r.y) << m.x_bits_) | static_cast<std::uint32_t>(r.x);
+                    std::memcpy(&m.list_[static_cast<std::size_t>(count[bin[k]]++) * static_cast<std::size_t>(m.stride_)], &packed,
+                                static_cast<std::size_t>(m.stride_));
                     m.stats_.depth = std::max(m.stats_.depth, d);
                     continue;
                 }
@@ -227,42 +226,8 @@ public:
                 stack[top] = c0, depth[top++] = d + 1;
             }
         }
-
-        // One tree per list longer than leaf_size, over the implicit splits. A node's texels lie in
-        // its region and in preorder, so child 0's come first: those left of (or above) the cut.
-        const std::uint32_t leaf = static_cast<std::uint32_t>(options.leaf_size);
-        m.root_.assign(bins, no_node);
-        struct pending {
-            region r;
-            std::uint32_t begin, end, parent;  // parent: node whose child-1 index to set, or no_node
-        };
-        std::vector<pending> work;
-        for (std::size_t j = 0; j < bins; ++j) {
-            const std::uint32_t b = m.offset_[j], e = m.offset_[j + 1];
-            if (e > b) ++m.stats_.nonempty_bins;
-            if (e - b <= leaf) continue;
-            ++m.stats_.trees;
-            m.root_[j] = static_cast<std::uint32_t>(m.nodes_.size());
-            work.push_back({{0, 0, m.w_, m.h_}, b, e, no_node});
-            while (!work.empty()) {
-                const pending p = work.back();
-                work.pop_back();
-                const std::uint32_t index = static_cast<std::uint32_t>(m.nodes_.size());
-                if (p.parent != no_node) m.nodes_[p.parent].child1 = index;
-                region c0, c1;
-                split(p.r, c0, c1);
-                const bool along_x = c1.x != c0.x;
-                const std::uint32_t cut = static_cast<std::uint32_t>(along_x ? c1.x : c1.y);
-                const std::uint32_t* base = m.texels_.data();
-                const std::uint32_t mid = static_cast<std::uint32_t>(
-                    std::partition_point(base + p.begin, base + p.end, [&](std::uint32_t t) { return (along_x ? t & 0xffffu : t >> 16) < cut; }) - base);
-                m.nodes_.push_back({mid, no_node});
-                // Child 0's subtree follows its parent (preorder); child 1's index is set when it is made.
-                if (p.end - mid > leaf) work.push_back({c1, mid, p.end, index});
-                if (mid - p.begin > leaf) work.push_back({c0, p.begin, mid, no_node});
-            }
-        }
-        m.stats_.texels = texels, m.stats_.bins = bins, m.stats_.nodes = m.nodes_.size();
+        for (std::size_t j = 0; j < bins; ++j) m.stats_.nonempty_bins += m.offset_[j + 1] > m.offset_[j] ? 1u : 0u;
+        m.stats_.texels = texels, m.stats_.bins = bins;
         m.stats_.build_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
         return m;
     }
@@ -309,14 +274,29 @@ public:
     int width() const { return w_; }
     int height() const { return h_; }
     const bin_map_options& options() const { return o_; }
+    // The bin of texel (x, y), 0 <= x < width, 0 <= y < height.
     std::uint32_t texel_bin(int x, int y) const {
-        return texel_bin_index(static_cast<std::uint32_t>(x) + static_cast<std::uint32_t>(y) * static_cast<std::uint32_t>(w_));
+        const int bx = x >> 3, by = y >> 3;
+        const std::uint8_t* b = &block_data_[block_offset_[static_cast<std::size_t>(bx) + static_cast<std::size_t>(by) * static_cast<std::size_t>(blocks_x_)]];
+        const unsigned slot = static_cast<unsigned>((x & 7) + 8 * (y & 7)), bits = b[0];
+        const std::size_t width = wide_bins() ? 4 : 2;
+        const std::uint8_t* at;
+        if (bits == 16) {
+            at = b + 2 + slot * width;
+        } else {
+            const std::size_t palette = static_cast<std::size_t>(b[1]) + 1;
+            const unsigned pos = slot * bits;
+            const unsigned index = bits ? (b[2 + palette * width + (pos >> 3)] >> (pos & 7)) & ((1u << bits) - 1u) : 0u;
+            at = b + 2 + index * width;
+        }
+        std::uint32_t v = 0;
+        std::memcpy(&v, at, width);  // little-endian
+        return v;
     }
     // Texels per bin (the global histogram times the texel count).
     std::uint32_t bin_texels(std::uint32_t j) const { return offset_[j + 1] - offset_[j]; }
     std::size_t memory_bytes() const {
-        return bin16_.size() * 2 + bin32_.size() * 4 + texels_.size() * 4 + offset_.size() * 4 + root_.size() * 4 + nodes_.size() * sizeof(node) +
-               centres_.size() * sizeof(glm::dvec3);
+        return block_offset_.size() * 4 + block_data_.size() + list_.size() + offset_.size() * 4 + centres_.size() * sizeof(glm::dvec3);
     }
     const bin_map_statistics& statistics() const { return stats_; }
 
@@ -391,13 +371,8 @@ public:
     }
 
 private:
-    static constexpr std::uint32_t no_node = 0xffffffffu;
+    static constexpr std::uint32_t no_bin = 0xffffffffu;
     static constexpr double pi() { return 3.14159265358979323846; }
-
-    struct node {
-        std::uint32_t mid;     // the offset in texels_ where child 1's texels start
-        std::uint32_t child1;  // child 1's node index, if it has one; child 0's is this node's + 1
-    };
     struct region {
         int x, y, w, h;
     };
@@ -441,12 +416,13 @@ private:
         return f;
     }
 
-    // The texel holding A's centre (the point query), wrapped into the map.
-    std::uint32_t center_texel(const footprint& f) const {
+    // The bin of the texel at (x, y) wrapped into the map.
+    std::uint32_t wrapped_bin(long x, long y) const { return texel_bin(static_cast<int>(((x % w_) + w_) % w_), static_cast<int>(((y % h_) + h_) % h_)); }
+
+    // The bin of the texel holding A's centre (the point query).
+    std::uint32_t center_bin(const footprint& f) const {
         const glm::dvec2 c = f.o + 0.5 * (f.e0 + f.e1);
-        const long x = static_cast<long>(std::floor(c.x)), y = static_cast<long>(std::floor(c.y));
-        const long wx = ((x % w_) + w_) % w_, wy = ((y % h_) + h_) % h_;
-        return static_cast<std::uint32_t>(wx) + static_cast<std::uint32_t>(wy) * static_cast<std::uint32_t>(w_);
+        return wrapped_bin(static_cast<long>(std::floor(c.x)), static_cast<long>(std::floor(c.y)));
     }
 
     // texel_center's rule: the x-interval [xa, xb) of A at height y (a point is in A when its x
@@ -553,48 +529,74 @@ private:
         const double tx0 = std::floor(f.lo.x / w_), tx1 = std::floor(f.hi.x / w_), ty0 = std::floor(f.lo.y / h_), ty1 = std::floor(f.hi.y / h_);
         double sum = 0;
         for (double ty = ty0; ty <= ty1; ty += 1)
-            for (double tx = tx0; tx <= tx1; tx += 1) sum += copy_weight(f, j, begin, end, tx * w_, ty * h_, exact);
+            for (double tx = tx0; tx <= tx1; tx += 1) sum += copy_weight(f, begin, end, tx * w_, ty * h_, exact);
         return sum;
     }
 
-    // One tile copy, whose texel (x, y) sits at (x + ox, y + oy): the tree walk of bin j's list.
-    double copy_weight(const footprint& f, std::uint32_t j, std::uint32_t begin, std::uint32_t end, double ox, double oy, bool exact) const {
+    // The list entry i: its texel's x and y.
+    std::uint32_t entry(std::uint32_t i) const {
+        std::uint32_t v;
+        std::memcpy(&v, &list_[static_cast<std::size_t>(i) * static_cast<std::size_t>(stride_)], 4);
+        return stride_ == 3 ? v & 0xffffffu : v;
+    }
+    std::uint32_t entry_x(std::uint32_t v) const { return v & ((1u << x_bits_) - 1u); }
+    std::uint32_t entry_y(std::uint32_t v) const { return v >> x_bits_; }
+
+    // Where child 1's texels start among a node's [begin, end) (its region split at `cut` along x
+    // or y): the first texel at or beyond the cut. A node with one empty child (most of a sparse
+    // bin's path from the root) is decided by its first and last texels alone.
+    std::uint32_t split_point(std::uint32_t begin, std::uint32_t end, bool along_x, std::uint32_t cut) const {
+        const auto coord = [&](std::uint32_t i) { const std::uint32_t v = entry(i); return along_x ? entry_x(v) : entry_y(v); };
+        if (coord(begin) >= cut) return begin;
+        if (coord(end - 1) < cut) return end;
+        std::uint32_t lo = begin + 1, hi = end - 1;  // coord(lo - 1) < cut <= coord(hi)
+        while (lo < hi) {
+            const std::uint32_t m = lo + (hi - lo) / 2;
+            if (coord(m) < cut) lo = m + 1;
+            else hi = m;
+        }
+        return lo;
+    }
+
+    // One tile copy, whose texel (x, y) sits at (x + ox, y + oy): the walk of bin j's list over the
+    // implicit tree; a node of at most leaf_size texels is scanned.
+    double copy_weight(const footprint& f, std::uint32_t begin, std::uint32_t end, double ox, double oy, bool exact) const {
         struct item {
             region r;
-            std::uint32_t node, begin, end;
+            std::uint32_t begin, end;
         };
         item stack[stack_size];
         int top = 0;
         const std::uint32_t leaf = static_cast<std::uint32_t>(o_.leaf_size);
         // Down the nodes whose one child holds all of A's bounding box, without the stack or the
         // separating-axis tests.
-        item top_item{{0, 0, w_, h_}, end - begin > leaf ? root_[j] : no_node, begin, end};
+        item it{{0, 0, w_, h_}, begin, end};
         const double lx = f.lo.x - ox, hx = f.hi.x - ox, ly = f.lo.y - oy, hy = f.hi.y - oy;
-        while (top_item.node != no_node) {
+        while (it.end - it.begin > leaf) {
             region c0, c1;
-            split(top_item.r, c0, c1);
+            split(it.r, c0, c1);
             const bool along_x = c1.x != c0.x;
-            const double cut = along_x ? c1.x : c1.y, lo = along_x ? lx : ly, hi = along_x ? hx : hy;
-            const node& nd = nodes_[top_item.node];
-            if (hi <= cut) top_item = {c0, nd.mid - top_item.begin > leaf ? top_item.node + 1 : no_node, top_item.begin, nd.mid};
-            else if (lo >= cut) top_item = {c1, top_item.end - nd.mid > leaf ? nd.child1 : no_node, nd.mid, top_item.end};
+            const std::uint32_t cut = static_cast<std::uint32_t>(along_x ? c1.x : c1.y);
+            const double lo = along_x ? lx : ly, hi = along_x ? hx : hy;
+            if (hi <= cut) it = {c0, it.begin, split_point(it.begin, it.end, along_x, cut)};
+            else if (lo >= cut) it = {c1, split_point(it.begin, it.end, along_x, cut), it.end};
             else break;
-            if (top_item.begin == top_item.end) return 0;
+            if (it.begin == it.end) return 0;
         }
-        stack[top++] = top_item;
+        stack[top++] = it;
         double sum = 0;
         while (top > 0) {
-            const item it = stack[--top];
+            it = stack[--top];
             const overlap c = classify(f, ox + it.r.x, oy + it.r.y, ox + it.r.x + it.r.w, oy + it.r.y + it.r.h);
             if (c == overlap::outside) continue;
             if (c == overlap::inside) {
                 sum += it.end - it.begin;
                 continue;
             }
-            if (it.node == no_node) {
+            if (it.end - it.begin <= leaf) {
                 for (std::uint32_t i = it.begin; i < it.end; ++i) {
-                    const std::uint32_t t = texels_[i];
-                    const double x = ox + static_cast<double>(t & 0xffffu), y = oy + static_cast<double>(t >> 16);
+                    const std::uint32_t v = entry(i);
+                    const double x = ox + static_cast<double>(entry_x(v)), y = oy + static_cast<double>(entry_y(v));
                     if (exact) {
                         const overlap ct = classify(f, x, y, x + 1, y + 1);
                         sum += ct == overlap::inside ? 1.0 : ct == overlap::outside ? 0.0 : texel_area(f, x, y);
@@ -606,9 +608,10 @@ private:
             }
             region c0, c1;
             split(it.r, c0, c1);
-            const std::uint32_t mid = nodes_[it.node].mid;
-            if (it.end > mid) stack[top++] = {c1, it.end - mid > leaf ? nodes_[it.node].child1 : no_node, mid, it.end};
-            if (mid > it.begin) stack[top++] = {c0, mid - it.begin > leaf ? it.node + 1 : no_node, it.begin, mid};
+            const bool along_x = c1.x != c0.x;
+            const std::uint32_t mid = split_point(it.begin, it.end, along_x, static_cast<std::uint32_t>(along_x ? c1.x : c1.y));
+            if (it.end > mid) stack[top++] = {c1, mid, it.end};
+            if (mid > it.begin) stack[top++] = {c0, it.begin, mid};
         }
         return sum;
     }
@@ -622,14 +625,69 @@ private:
 
     double coverage_of(const footprint& f, std::uint32_t j) const {
         const bool exact = o_.rule == coverage_rule::exact_area;
-        if (f.point) return texel_bin_index(center_texel(f)) == j ? 1 : 0;
+        if (f.point) return center_bin(f) == j ? 1 : 0;
         if (beyond_copies(f)) return static_cast<double>(bin_texels(j)) / static_cast<double>(stats_.texels);
         const double total = exact ? f.area : centre_total(f);
-        if (!(total > 0)) return texel_bin_index(center_texel(f)) == j ? 1 : 0;  // texel_center: no centre in A
+        if (!(total > 0)) return center_bin(f) == j ? 1 : 0;  // texel_center: no centre in A
         return bin_weight(f, j, exact) / total;
     }
 
-    std::uint32_t texel_bin_index(std::uint32_t k) const { return wide_bins_ ? bin32_[k] : bin16_[k]; }
+    bool wide_bins() const { return bin_count() > 65536u; }
+
+    // The bin map in blocks of 8 x 8 texels, each a palette of its distinct bins (16 or 32 bits
+    // each) and a 0-, 1-, 2-, 4- or 8-bit index per texel, or, with more than 256 distinct bins,
+    // the bins themselves: [bits][palette size - 1][palette][indices] (bits = 16: [16][0][64 bins]).
+    // Glinty maps have few bins per block (flakes of 8 texels: 2 bits), so about 0.5 bytes per texel
+    // instead of 2.
+    void compress_bins(const std::vector<std::uint32_t>& bin) {
+        blocks_x_ = (w_ + 7) / 8;
+        const int blocks_y = (h_ + 7) / 8;
+        const std::size_t width = wide_bins() ? 4 : 2;
+        block_offset_.assign(static_cast<std::size_t>(blocks_x_) * static_cast<std::size_t>(blocks_y) + 1, 0);
+        block_data_.clear();
+        block_data_.reserve(block_offset_.size() * 32);
+        std::uint32_t slots[64], palette[64];
+        const auto put = [&](std::uint32_t v) {
+            const std::uint8_t* p = reinterpret_cast<const std::uint8_t*>(&v);
+            block_data_.insert(block_data_.end(), p, p + width);  // little-endian
+        };
+        for (int by = 0; by < blocks_y; ++by)
+            for (int bx = 0; bx < blocks_x_; ++bx) {
+                block_offset_[static_cast<std::size_t>(bx) + static_cast<std::size_t>(by) * static_cast<std::size_t>(blocks_x_)] =
+                    static_cast<std::uint32_t>(block_data_.size());
+                // Slots outside the map repeat the block's first texel's bin.
+                for (int i = 0; i < 64; ++i) {
+                    const int x = std::min(8 * bx + i % 8, w_ - 1), y = std::min(8 * by + i / 8, h_ - 1);
+                    const bool inside = 8 * bx + i % 8 < w_ && 8 * by + i / 8 < h_;
+                    slots[i] = bin[static_cast<std::size_t>(inside ? x : 8 * bx) + static_cast<std::size_t>(inside ? y : 8 * by) * static_cast<std::size_t>(w_)];
+                }
+                // The palette in order of first appearance, and each slot's index in it.
+                std::uint8_t index[64];
+                int distinct = 0;
+                for (int i = 0; i < 64; ++i) {
+                    int k = 0;
+                    while (k < distinct && palette[k] != slots[i]) ++k;
+                    if (k == distinct) palette[distinct++] = slots[i];
+                    index[i] = static_cast<std::uint8_t>(k);
+                }
+                const unsigned bits = distinct == 1 ? 0 : distinct == 2 ? 1 : distinct <= 4 ? 2 : distinct <= 16 ? 4 : 8;
+                if (distinct * static_cast<int>(width) + 64 >= 64 * static_cast<int>(width)) {  // raw: no dearer than the palette with 8-bit indices
+                    block_data_.push_back(16), block_data_.push_back(0);
+                    for (const std::uint32_t v : slots) put(v);
+                    continue;
+                }
+                block_data_.push_back(static_cast<std::uint8_t>(bits)), block_data_.push_back(static_cast<std::uint8_t>(distinct - 1));
+                for (int i = 0; i < distinct; ++i) put(palette[i]);
+                std::uint8_t packed[64] = {};
+                for (unsigned i = 0; i < 64 && bits > 0; ++i) {
+                    const unsigned pos = i * bits;
+                    packed[pos >> 3] = static_cast<std::uint8_t>(packed[pos >> 3] | (static_cast<unsigned>(index[i]) << (pos & 7)));
+                }
+                block_data_.insert(block_data_.end(), packed, packed + 64 * bits / 8);
+            }
+        block_offset_.back() = static_cast<std::uint32_t>(block_data_.size());
+        block_data_.insert(block_data_.end(), 4, 0);  // bins are read with memcpy of up to 4 bytes
+    }
 
     glm::dvec3 bin_center_d(std::uint32_t j) const {
         if (!centres_.empty()) return centres_[j];
@@ -684,11 +742,11 @@ private:
         const long x0 = static_cast<long>(std::floor(f.lo.x)), x1 = static_cast<long>(std::floor(f.hi.x));
         const long y0 = static_cast<long>(std::floor(f.lo.y)), y1 = static_cast<long>(std::floor(f.hi.y));
         for (long y = y0; y <= y1; ++y) {
-            const std::uint32_t row = static_cast<std::uint32_t>(((y % h_) + h_) % h_) * static_cast<std::uint32_t>(w_);
+            const int wy = static_cast<int>(((y % h_) + h_) % h_);
             long wx = ((x0 % w_) + w_) % w_;
             for (long x = x0; x <= x1; ++x, wx = wx + 1 == w_ ? 0 : wx + 1) {
                 const double gx = static_cast<double>(x), gy = static_cast<double>(y);
-                const double k = factor(texel_bin_index(row + static_cast<std::uint32_t>(wx)));
+                const double k = factor(texel_bin(static_cast<int>(wx), wy));
                 if (exact) {
                     if (k == 0) continue;
                     const overlap c = classify(f, gx, gy, gx + 1, gy + 1);
@@ -724,7 +782,7 @@ private:
         } else {
             const std::uint32_t jh = cell_of(q), n = static_cast<std::uint32_t>(n_);
             const int hx = static_cast<int>(jh % n), hy = static_cast<int>(jh / n);
-            std::uint32_t last = no_node;
+            std::uint32_t last = no_bin;
             double last_k = 0;
             sum = texel_sum(
                 f,
@@ -823,18 +881,16 @@ private:
     // The bin of a texel drawn by its weight in A (u in [0, 1)^2).
     std::uint32_t sample_texel_bin(const footprint& f, glm::dvec2 u) const {
         u = glm::clamp(u, 0.0, std::nextafter(1.0, 0.0));
-        if (f.point) return texel_bin_index(center_texel(f));
+        if (f.point) return center_bin(f);
         if (beyond_copies(f))  // the global histogram: a uniform texel of the map
             return texel_bin(std::min(static_cast<int>(u.x * w_), w_ - 1), std::min(static_cast<int>(u.y * h_), h_ - 1));
         if (o_.rule == coverage_rule::exact_area) {
             const glm::dvec2 p = f.o + u.x * f.e0 + u.y * f.e1;
-            long x = static_cast<long>(std::floor(p.x)), y = static_cast<long>(std::floor(p.y));
-            x = ((x % w_) + w_) % w_, y = ((y % h_) + h_) % h_;
-            return texel_bin_index(static_cast<std::uint32_t>(x) + static_cast<std::uint32_t>(y) * static_cast<std::uint32_t>(w_));
+            return wrapped_bin(static_cast<long>(std::floor(p.x)), static_cast<long>(std::floor(p.y)));
         }
         // texel_center: the k-th centre in A, k uniform, counting row by row as centre_total does.
         const double total = centre_total(f);
-        if (!(total > 0)) return texel_bin_index(center_texel(f));
+        if (!(total > 0)) return center_bin(f);
         double k = std::floor(u.x * total);
         const double y0 = std::ceil(f.lo.y - 0.5), y1 = std::floor(f.hi.y - 0.5);
         for (double y = y0; y <= y1; y += 1) {
@@ -842,23 +898,22 @@ private:
             row_interval(f, y + 0.5, xa, xb);
             const double c = centres_in(xa, xb);
             if (k < c) {
-                const long x = static_cast<long>(first_centre(xa) + k), yy = static_cast<long>(y);
-                const long wx = ((x % w_) + w_) % w_, wy = ((yy % h_) + h_) % h_;
-                return texel_bin_index(static_cast<std::uint32_t>(wx) + static_cast<std::uint32_t>(wy) * static_cast<std::uint32_t>(w_));
+                return wrapped_bin(static_cast<long>(first_centre(xa) + k), static_cast<long>(y));
             }
             k -= c;
         }
-        return texel_bin_index(center_texel(f));  // not reached: k < total
+        return center_bin(f);  // not reached: k < total
     }
 
     bin_map_options o_;
     int n_ = 1, w_ = 0, h_ = 0;
-    bool wide_bins_ = false;
     double cos_cap_ = 1, cos_reach_ = 1;
-    std::vector<std::uint16_t> bin16_;
-    std::vector<std::uint32_t> bin32_;
-    std::vector<std::uint32_t> offset_, texels_, root_;
-    std::vector<node> nodes_;
+    int blocks_x_ = 0;
+    std::vector<std::uint32_t> block_offset_;  // the bin map (compress_bins): blocks of 8 x 8 texels
+    std::vector<std::uint8_t> block_data_;
+    int x_bits_ = 16, stride_ = 4;      // list entries: (y << x_bits) | x in 3 bytes (sides <= 4096) or 4
+    std::vector<std::uint8_t> list_;   // the inverse bin map: every bin's texels, bin after bin, each list in preorder
+    std::vector<std::uint32_t> offset_;  // bin j's texels: entries offset_[j] to offset_[j + 1]
     std::vector<glm::dvec3> centres_;  // beckmann with B <= 2^20: the bins' centres, read by every lobe
     bin_map_statistics stats_;
 };

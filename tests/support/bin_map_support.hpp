@@ -5,12 +5,14 @@
 #pragma once
 
 #include <algorithm>
+#include <utility>
 #include <cmath>
 #include <cstdint>
 #include <vector>
 
 #include <glint/bin_map.hpp>
 #include <glint/core.hpp>
+#include <glint/normal_map.hpp>
 
 namespace glint_test {
 
@@ -86,6 +88,67 @@ std::vector<double> brute_coverages(const glint::bin_map<real>& m, const texel_p
     const double area = std::fabs(P.e0.x * P.e1.y - P.e0.y * P.e1.x);
     for (double& v : c) v /= area;
     return c;
+}
+
+// The unbinned reference of the beckmann kernel: the texels under P with their own normals t_k
+// and areas a_k = |P n T_k|, and the density sum_k a_k K(h; t_k) / |P| (K: the truncated,
+// renormalised Beckmann lobe of glint/bin_map.hpp). The bins' quantisation of t_k is its only
+// difference from bin_map::eval with the beckmann kernel.
+struct unbinned_texels {
+    std::vector<glm::dvec3> normal;
+    std::vector<double> cumulative_area;  // running sum of a_k
+    double alpha = 0.01, epsilon = 0.0111;
+
+    unbinned_texels(const glint::normal_map& map, const texel_parallelogram& P, double a, double e) : alpha(a), epsilon(e) {
+        double sum = 0;
+        for_each_texel_under(P, [&](double x, double y) {
+            const double area = clipped_area(P, x, y);
+            if (!(area > 0)) return;
+            normal.push_back(glm::dvec3(map.texel(static_cast<long>(x), static_cast<long>(y))));
+            cumulative_area.push_back(sum += area);
+        });
+    }
+    double lobe(const glm::dvec3& t, const glm::dvec3& h) const {
+        const double c = glm::dot(t, h), cos_cap = 1 / std::sqrt(1 + alpha * alpha * std::log(1 / epsilon));
+        if (c < cos_cap) return 0;
+        return std::exp(-(1 - c * c) / (c * c) / (alpha * alpha)) / (3.141592653589793 * alpha * alpha * c * c * c) / (1 - epsilon);
+    }
+    double pdf(const glm::dvec3& h) const {
+        if (!(h.z > 0)) return 0;
+        double sum = 0, previous = 0;
+        for (std::size_t k = 0; k < normal.size(); ++k) sum += (cumulative_area[k] - previous) * lobe(normal[k], h), previous = cumulative_area[k];
+        return sum / cumulative_area.back();
+    }
+    // A texel by area (u0), then its lobe (u1, u2); z <= 0 when the draw falls below the horizon.
+    glm::dvec3 sample(double u0, double u1, double u2) const {
+        const std::size_t k = static_cast<std::size_t>(std::upper_bound(cumulative_area.begin(), cumulative_area.end(), u0 * cumulative_area.back()) - cumulative_area.begin());
+        const glm::dvec3 n = normal[std::min(k, normal.size() - 1)];
+        const double tan2 = -alpha * alpha * std::log(1 - u1 * (1 - epsilon)), c = 1 / std::sqrt(1 + tan2), s = std::sqrt(1 - c * c);
+        const glm::dvec3 a = std::fabs(n.x) < 0.9 ? glm::dvec3(1, 0, 0) : glm::dvec3(0, 1, 0);
+        const glm::dvec3 t = glm::normalize(glm::cross(a, n)), b = glm::cross(n, t);
+        const double phi = 6.283185307179586 * u2;
+        return glm::normalize(s * std::cos(phi) * t + s * std::sin(phi) * b + c * n);
+    }
+};
+
+// The L1 distance between two densities p and r on the hemisphere (per solid angle), by
+// sampling their mixture: E over (p + r) / 2 of 2 |p - r| / (p + r). sample_p(i) and sample_r(i)
+// return the i-th draw (z <= 0: lost below the horizon, where both are 0). Returns the estimate
+// and its standard error.
+template <class SampleP, class SampleR, class P, class R>
+std::pair<double, double> mixture_l1(int draws, SampleP&& sample_p, SampleR&& sample_r, P&& p, R&& r) {
+    double s = 0, s2 = 0;
+    for (int i = 0; i < draws; ++i) {
+        const glm::dvec3 h = i % 2 ? sample_r(i) : sample_p(i);
+        double v = 0;
+        if (h.z > 0) {
+            const double a = p(h), b = r(h);
+            v = a + b > 0 ? 2 * std::fabs(a - b) / (a + b) : 0.0;
+        }
+        s += v, s2 += v * v;
+    }
+    const double mean = s / draws;
+    return {mean, std::sqrt(std::max(0.0, s2 / draws - mean * mean) / draws)};
 }
 
 // A random footprint (uv) from counter-based uniforms: centre anywhere in [-1.5, 2.5)^2 uv (so

@@ -132,7 +132,7 @@ section bin_map_section(double min_time) {
 
     // Evaluation time against the footprint's side.
     md << "### Evaluation time against the footprint\n\nns per eval (one float query); `visit all` visits every texel under the "
-          "footprint's bounding box (the box kernel with direct_texels = 2^20: brute force with the same weights); the P-NDF is eval with "
+          "footprint's bounding box (the box kernel with direct_texels = 2^30: brute force with the same weights); the P-NDF is eval with "
           "its hierarchy (one run each; the P-NDF above 512 texels is not timed: at 512 it already takes milliseconds). Speed-up: P-NDF / "
           "bin map.\n\n";
     const std::vector<double> sides = {8, 16, 32, 64, 128, 256, 512, 1024, 2048};
@@ -142,7 +142,7 @@ section bin_map_section(double min_time) {
         for (const auto k : kernels) ms.push_back(bmap::build(maps[mi], options(bins, k)));
         const bmap centre = bmap::build(maps[mi], options(bins, glint::bin_kernel::box, glint::coverage_rule::texel_center));
         glint::bin_map_options all = options(bins, glint::bin_kernel::box);
-        all.direct_texels = 1 << 20;
+        all.direct_texels = 1 << 30;
         const bmap visit = bmap::build(maps[mi], all);
         glint::gaussian_params<float> g;
         g.sigma_r = static_cast<float>(sigma_r);

@@ -9,12 +9,18 @@
 //                        [--close] [--size WxH] [--out PATH.exr]
 //                        [--example-size N [--ndf-map] [--placement tiled|stochastic] [--cell C]
 //                         [--rotation MIN,MAX] [--scale MIN,MAX] [--flip P]]
+//                        [--map-size N] [--bin-map [--bins N] [--kernel box|tent|beckmann]]
 //
 // With --example-size the surface is covered by copies of an N x N example of the pattern
 // (XTXW24's tiny example): tiled, or one randomly rotated, scaled and mirrored copy per cell of C
 // texels (degrees for --rotation). --ndf-map shades it with the example's NDF maps
 // (glint/ndf_map.hpp); without it, with the direct P-NDF of the same layout (the example's
 // element hierarchy when tiled, the element path of every copy when stochastic), for comparison.
+//
+// --map-size sets the procedural map's side (default 256). --bin-map shades the map with its
+// inverse bin map (glint/bin_map.hpp, AKKW) instead of the P-NDF: each pixel's ray-differential
+// parallelogram, the microfacet NDF of n^2 half-vector bins (default n = ceil(3.6 / alpha) with the
+// flake roughness alpha = sqrt(2) sigma_r) and the beckmann kernel unless --kernel says otherwise.
 //
 // The environment is lit as 64 directional lights drawn once from its luminance (the same for
 // every pixel, each weighted by radiance / pdf): an estimate of the environment integral that
@@ -29,6 +35,7 @@
 #include <string>
 #include <vector>
 
+#include <glint/bin_map.hpp>
 #include <glint/gaussian.hpp>
 #include <glint/ndf_map.hpp>
 #include <glint/io/exr.hpp>
@@ -50,7 +57,8 @@ namespace {
                  "                            [--texels-per-unit T] [--sigma-r S] [--light point|env] [--env PATH.exr]\n"
                  "                            [--close] [--size WxH] [--out PATH.exr]\n"
                  "                            [--example-size N [--ndf-map] [--placement tiled|stochastic] [--cell C]\n"
-                 "                             [--rotation MIN,MAX] [--scale MIN,MAX] [--flip P]]\n",
+                 "                             [--rotation MIN,MAX] [--scale MIN,MAX] [--flip P]]\n"
+                 "                            [--map-size N] [--bin-map [--bins N] [--kernel box|tent|beckmann]]\n",
                  problem.c_str());
     std::exit(2);
 }
@@ -105,8 +113,9 @@ void parse_range(const std::string& flag, const std::string& v, float lo, float 
 int main(int argc, char** argv) {
     std::string pattern = "brushed", map_path, light = "point", env_path = std::string(GLINT_DATA_DIR) + "/envmaps/studio.exr", out = "glint_microstructure.exr";
     float texels_per_unit = 600.0f, sigma_r = 0.01f;
-    bool close = false, use_map = false;
-    int w = 640, h = 400, example_size = 0;
+    bool close = false, use_map = false, use_bins = false;
+    int w = 640, h = 400, example_size = 0, map_size = 256, bins = 0;
+    std::string kernel = "beckmann";
     std::string placement_kind = "tiled";
     float cell = 0, rot0 = 0, rot1 = 360, scale0 = 0.8f, scale1 = 1.25f, flip = 0.5f;
     for (int i = 1; i < argc; ++i) {
@@ -134,10 +143,18 @@ int main(int argc, char** argv) {
         else if (a == "--rotation") parse_range(a, value(), -3600, 3600, rot0, rot1);
         else if (a == "--scale") parse_range(a, value(), 0.01f, 100, scale0, scale1);
         else if (a == "--flip") flip = parse_float(a, value(), 0, 1, usage);
+        else if (a == "--map-size") map_size = static_cast<int>(parse_float(a, value(), 4, 65536, usage));
+        else if (a == "--bin-map") use_bins = true;
+        else if (a == "--bins") bins = static_cast<int>(parse_float(a, value(), 1, 4096, usage));
+        else if (a == "--kernel") {
+            kernel = value();
+            if (kernel != "box" && kernel != "tent" && kernel != "beckmann") usage("--kernel must be box, tent or beckmann, got '" + kernel + "'");
+        }
         else if (a == "--help" || a == "-h") usage("renders normal-mapped microstructure");
         else usage("unknown argument '" + a + "'");
     }
     if (use_map && example_size == 0) usage("--ndf-map needs --example-size");
+    if (use_bins && example_size > 0) usage("--bin-map shades a whole map: leave out --example-size");
     if (example_size == 0 && (placement_kind != "tiled" || cell > 0)) usage("--placement and --cell need --example-size");
     glint::normal_map map;
     std::vector<directional> env_lights;
@@ -147,9 +164,11 @@ int main(int argc, char** argv) {
         } else {
             glint::pattern_params p;
             p.kind = glint::parse_pattern(pattern);
-            p.width = p.height = example_size > 0 ? example_size : 256;
+            p.width = p.height = example_size > 0 ? example_size : map_size;
+            p.count = static_cast<int>(150.0 * p.width * p.height / (512.0 * 512.0));  // scratched_metal: 150 segments per 512^2
             p.seed = 3;
             p.slope_rms = p.kind == glint::pattern::flakes ? 0.12 : p.kind == glint::pattern::scratches ? 0.1 : 0.15;
+            if (p.kind == glint::pattern::scratched_metal) p.slope_rms = 0.12;
             p.feature = p.kind == glint::pattern::leather ? 24 : 10;
             if (example_size > 0) p.feature = std::min(p.feature, example_size / (p.kind == glint::pattern::leather ? 2.5 : 5.0));
             map = glint::make_normal_map(p);
@@ -168,8 +187,23 @@ int main(int argc, char** argv) {
     glint::gaussian_pndf<float> pndf;
     glint::ndf_map<float> ndf;
     glint::ndf_placement<float> layout = glint::ndf_placement<float>::tiled();
+    glint::bin_map<float> bin_map;
+    float bin_alpha_g = 0;
     try {
-        if (example_size > 0 && (use_map || stochastic)) {
+        if (use_bins) {
+            glint::bin_map_options o;
+            o.alpha = std::sqrt(2.0) * static_cast<double>(sigma_r);
+            o.bins_per_side = bins > 0 ? bins : static_cast<int>(std::ceil(3.6 / o.alpha));
+            o.kernel = kernel == "box" ? glint::bin_kernel::box : kernel == "tent" ? glint::bin_kernel::tent : glint::bin_kernel::beckmann;
+            bin_map = glint::bin_map<float>::build(map, o);
+            // Smith's roughness from the map's mean squared slope and the flake lobes' (as the P-NDF's alpha_g).
+            double slope2 = 0;
+            for (const glm::vec3& n : map.normals()) slope2 += static_cast<double>(n.x * n.x + n.y * n.y) / static_cast<double>(n.z * n.z);
+            bin_alpha_g = static_cast<float>(std::sqrt(slope2 / static_cast<double>(map.normals().size()) + o.alpha * o.alpha));
+            std::fprintf(stderr, "glint_microstructure: %d x %d map, bin map of %d^2 bins (%s), %.1f MB (%.2f bytes per texel), built in %.2f s\n", map.width(),
+                         map.height(), o.bins_per_side, kernel.c_str(), static_cast<double>(bin_map.memory_bytes()) / 1e6,
+                         static_cast<double>(bin_map.memory_bytes()) / (static_cast<double>(map.width()) * map.height()), bin_map.statistics().build_seconds);
+        } else if (example_size > 0 && (use_map || stochastic)) {
             glint::ndf_map_params mp;
             mp.sigma_r = sigma_r;
             ndf = glint::ndf_map<float>::build(map, mp);
@@ -189,7 +223,7 @@ int main(int argc, char** argv) {
         return 1;
     }
     const bool by_map = example_size > 0 && use_map, by_elements = example_size > 0 && stochastic && !use_map;
-    const float alpha_g = by_map || by_elements ? ndf.alpha_g() : pndf.alpha_g();
+    const float alpha_g = use_bins ? bin_alpha_g : by_map || by_elements ? ndf.alpha_g() : pndf.alpha_g();
     const auto pndf_at = [&](const glint::texel_footprint<float>& fp, const glm::vec2& s) {
         if (by_map) return ndf.eval(layout, fp, s);
         if (by_elements) return ndf.eval_direct(layout, fp, s);
@@ -202,6 +236,9 @@ int main(int argc, char** argv) {
     const auto shade = [&](int, int, const vec3& d, const hit& ht, const vec2& duvdx, const vec2& duvdy) {
         vec3 L(0);
         const auto fp = glint::footprint_from_uv_derivatives(ht.uv, duvdx, duvdy, tex_per_uv);
+        // The bin map's footprint: the pixel's parallelogram in the map's [0, 1)^2.
+        const vec2 to_map = vec2(tex_per_uv / static_cast<float>(map.width()), tex_per_uv / static_cast<float>(map.height()));
+        const auto A = glint::uv_parallelogram<float>::from_differentials(ht.uv * to_map, duvdx * to_map, duvdy * to_map);
         const vec3 wo = to_local(ht, -d);
         const auto add = [&](const vec3& wi_world, const vec3& radiance) {
             const vec3 wi = to_local(ht, wi_world);
@@ -209,7 +246,7 @@ int main(int argc, char** argv) {
             const vec3 hv = glm::normalize(wi + wo);
             if (!(hv.z > 0)) return;
             // One P-NDF value per light; the Fresnel term per channel (XTXW24 Eq. 1).
-            const float dp = pndf_at(fp, glm::vec2(hv.x, hv.y));
+            const float dp = use_bins ? bin_map.eval(A, hv).ndf : pndf_at(fp, glm::vec2(hv.x, hv.y));
             if (!(dp > 0)) return;
             for (int c = 0; c < 3; ++c)
                 L[c] += glint::detail::glsl::kernels<float>::glint_pndf_brdf(dp, wi, wo, static_cast<int>(glint::ndf::beckmann), glm::vec2(alpha_g), silver_eta[c],

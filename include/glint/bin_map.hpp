@@ -91,8 +91,8 @@ struct bin_map_options {
     coverage_rule rule = coverage_rule::exact_area;
     int max_tile_copies = 256;                     // [1, 2^20]; beyond: the global histogram
     // Footprints whose bounding box holds at most this many texels visit them directly instead of
-    // walking trees (the same weights, so the same results up to the order of the sums); -1: the
-    // default per kernel (see bin_map::direct), 0: always walk. [-1, 2^20]
+    // walking the lists (the same weights, so the same results up to the order of the sums); -1:
+    // chosen per query (bin_map::direct), 0: always walk. [-1, 2^30]
     int direct_texels = -1;
 };
 
@@ -156,7 +156,7 @@ public:
             bad("bins_per_side " + std::to_string(o.bins_per_side) + " is outside [1, " + std::to_string(max_bins_per_side) + "]");
         if (o.leaf_size < 1 || o.leaf_size > (1 << 20)) bad("leaf_size " + std::to_string(o.leaf_size) + " is outside [1, 2^20]");
         if (o.max_tile_copies < 1 || o.max_tile_copies > (1 << 20)) bad("max_tile_copies " + std::to_string(o.max_tile_copies) + " is outside [1, 2^20]");
-        if (o.direct_texels < -1 || o.direct_texels > (1 << 20)) bad("direct_texels " + std::to_string(o.direct_texels) + " is outside [-1, 2^20]");
+        if (o.direct_texels < -1 || o.direct_texels > (1 << 30)) bad("direct_texels " + std::to_string(o.direct_texels) + " is outside [-1, 2^30]");
         if (o.kernel == bin_kernel::beckmann) {
             if (!(o.alpha >= 0.0025 && o.alpha <= 0.5)) bad("alpha " + std::to_string(o.alpha) + " is outside [0.0025, 0.5]");
             if (!(o.epsilon >= 1e-4 && o.epsilon <= 0.2)) bad("epsilon " + std::to_string(o.epsilon) + " is outside [1e-4, 0.2]");
@@ -289,9 +289,7 @@ public:
             const unsigned index = bits ? (b[2 + palette * width + (pos >> 3)] >> (pos & 7)) & ((1u << bits) - 1u) : 0u;
             at = b + 2 + index * width;
         }
-        std::uint32_t v = 0;
-        std::memcpy(&v, at, width);  // little-endian
-        return v;
+        return read_bin(at);
     }
     // Texels per bin (the global histogram times the texel count).
     std::uint32_t bin_texels(std::uint32_t j) const { return offset_[j + 1] - offset_[j]; }
@@ -395,6 +393,7 @@ private:
         double area = 0;
         bool finite = false, point = false;  // point: a point query at the centre texel
         glm::dvec2 lo{0}, hi{0};              // bounding box
+        glm::dvec2 unit_a{0}, unit_b{0};      // the ranges of a and b over a unit square, from its corner's
     };
 
     footprint prepare(const uv_parallelogram<real>& A) const {
@@ -411,6 +410,8 @@ private:
         f.area = std::fabs(det);
         f.point = !(f.area > 1e-12 * std::max(1.0, glm::dot(f.e0, f.e0) + glm::dot(f.e1, f.e1)));
         if (!f.point) f.ia = glm::dvec2(f.e1.y, -f.e1.x) / det, f.ib = glm::dvec2(-f.e0.y, f.e0.x) / det;
+        f.unit_a = {std::min(0.0, f.ia.x) + std::min(0.0, f.ia.y), std::max(0.0, f.ia.x) + std::max(0.0, f.ia.y)};
+        f.unit_b = {std::min(0.0, f.ib.x) + std::min(0.0, f.ib.y), std::max(0.0, f.ib.x) + std::max(0.0, f.ib.y)};
         const glm::dvec2 c[4] = {f.o, f.o + f.e0, f.o + f.e1, f.o + f.e0 + f.e1};
         f.lo = glm::min(glm::min(c[0], c[1]), glm::min(c[2], c[3])), f.hi = glm::max(glm::max(c[0], c[1]), glm::max(c[2], c[3]));
         return f;
@@ -489,16 +490,39 @@ private:
         return overlap::boundary;
     }
 
+    // classify for the texel [x, x+1] x [y, y+1]: the same tests with the unit square's ranges
+    // of a and b precomputed.
+    static overlap classify_texel(const footprint& f, double x, double y) {
+        if (x + 1 <= f.lo.x || x >= f.hi.x || y + 1 <= f.lo.y || y >= f.hi.y) return overlap::outside;
+        const glm::dvec2 d0(x - f.o.x, y - f.o.y);
+        const double a = glm::dot(f.ia, d0), b = glm::dot(f.ib, d0);
+        const double amin = a + f.unit_a.x, amax = a + f.unit_a.y, bmin = b + f.unit_b.x, bmax = b + f.unit_b.y;
+        if (amax <= 0 || amin >= 1 || bmax <= 0 || bmin >= 1) return overlap::outside;
+        if (amin >= 0 && amax <= 1 && bmin >= 0 && bmax <= 1) return overlap::inside;
+        return overlap::boundary;
+    }
+    // The texel's weight under the exact-area rule.
+    static double texel_weight(const footprint& f, double x, double y) {
+        const overlap c = classify_texel(f, x, y);
+        return c == overlap::inside ? 1.0 : c == overlap::outside ? 0.0 : texel_area(f, x, y);
+    }
+
     // |A n [x, x+1] x [y, y+1]|: the texel's square clipped by A's four half-planes
     // (Sutherland-Hodgman) in texel-local coordinates, then the shoelace formula.
     static double texel_area(const footprint& f, double x, double y) {
-        double px[12] = {0, 1, 1, 0}, py[12] = {0, 0, 1, 1}, qx[12], qy[12];
-        int count = 4;
+        double buf[2][2][12] = {{{0, 1, 1, 0}, {0, 0, 1, 1}}, {}};  // [polygon][x or y][vertex], ping-pong
+        int count = 4, cur = 0;
         const glm::dvec2 d0(x - f.o.x, y - f.o.y);
         const double a0 = glm::dot(f.ia, d0), b0 = glm::dot(f.ib, d0);
         // Half-planes g(p) = c + gx px + gy py >= 0.
         const double planes[4][3] = {{a0, f.ia.x, f.ia.y}, {1 - a0, -f.ia.x, -f.ia.y}, {b0, f.ib.x, f.ib.y}, {1 - b0, -f.ib.x, -f.ib.y}};
         for (const auto& g : planes) {
+            // A plane that keeps the whole square (most of them, for a texel on one edge of A) is skipped.
+            if (g[0] + std::min(0.0, g[1]) + std::min(0.0, g[2]) >= 0) continue;
+            const double* px = buf[cur][0];
+            const double* py = buf[cur][1];
+            double* qx = buf[1 - cur][0];
+            double* qy = buf[1 - cur][1];
             int out = 0;
             for (int i = 0; i < count; ++i) {
                 const int k = i + 1 == count ? 0 : i + 1;
@@ -509,10 +533,11 @@ private:
                     qx[out] = px[i] + t * (px[k] - px[i]), qy[out] = py[i] + t * (py[k] - py[i]), ++out;
                 }
             }
-            count = out;
-            for (int i = 0; i < count; ++i) px[i] = qx[i], py[i] = qy[i];
+            count = out, cur = 1 - cur;
             if (count == 0) return 0;
         }
+        const double* px = buf[cur][0];
+        const double* py = buf[cur][1];
         double s = 0;
         for (int i = 0; i < count; ++i) {
             const int k = i + 1 == count ? 0 : i + 1;
@@ -598,8 +623,7 @@ private:
                     const std::uint32_t v = entry(i);
                     const double x = ox + static_cast<double>(entry_x(v)), y = oy + static_cast<double>(entry_y(v));
                     if (exact) {
-                        const overlap ct = classify(f, x, y, x + 1, y + 1);
-                        sum += ct == overlap::inside ? 1.0 : ct == overlap::outside ? 0.0 : texel_area(f, x, y);
+                        sum += texel_weight(f, x, y);
                     } else {
                         sum += centre_in(f, x, y) ? 1.0 : 0.0;
                     }
@@ -633,6 +657,18 @@ private:
     }
 
     bool wide_bins() const { return bin_count() > 65536u; }
+    // A bin stored at p: 2 bytes, or 4 when there are more than 65536 bins (fixed-size copies, which
+    // compile to one load).
+    std::uint32_t read_bin(const std::uint8_t* p) const {
+        if (wide_bins()) {
+            std::uint32_t v;
+            std::memcpy(&v, p, 4);
+            return v;
+        }
+        std::uint16_t v;
+        std::memcpy(&v, p, 2);
+        return v;
+    }
 
     // The bin map in blocks of 8 x 8 texels, each a palette of its distinct bins (16 or 32 bits
     // each) and a 0-, 1-, 2-, 4- or 8-bit index per texel, or, with more than 256 distinct bins,
@@ -722,82 +758,68 @@ private:
         return std::exp(-tan2 / a2) / (pi() * a2 * c2 * c) / (1 - o_.epsilon);
     }
 
-    // Whether A's bounding box holds few enough texels that visiting each of them costs less than
-    // the kernel's tree walks (direct_texels, or by default 64 per walk the kernel needs at
-    // least: box 1, tent 4, beckmann 16; the crossovers measured in docs/bin_map.md).
-    bool direct(const footprint& f) const {
+    // Whether visiting the texels under A's bounding box costs less than the kernel's walks of
+    // the lists (a few hundred ns each): with direct_texels >= 0, when the box holds at most that
+    // many texels; by default, when it holds at most 256 per walk (4 blocks of the bin map, whose
+    // palettes let the visit skip the blocks without the kernel's bins) and the texels likely to
+    // be visited, the box's times the share of blocks that may hold those bins (at most 64 times
+    // their share of the map's texels), are at most 32 per walk. `share`: the kernel's bins'
+    // share of the map's texels (beckmann: 1 / 64 and 16 walks, a box of up to 4096 texels, as
+    // its walks are many and its bins unknown before the cap's flood fill). The constants are
+    // the crossovers of bench/report_bin_map.cpp's timings on flakes and scratched metal.
+    bool direct(const footprint& f, double share, int walks) const {
         if (f.point || beyond_copies(f)) return false;
-        const double limit = o_.direct_texels >= 0 ? o_.direct_texels : o_.kernel == bin_kernel::box ? 64 : o_.kernel == bin_kernel::tent ? 256 : 1024;
-        return (std::floor(f.hi.x) - std::floor(f.lo.x) + 1) * (std::floor(f.hi.y) - std::floor(f.lo.y) + 1) <= limit;
+        const double box = (std::floor(f.hi.x) - std::floor(f.lo.x) + 1) * (std::floor(f.hi.y) - std::floor(f.lo.y) + 1);
+        if (o_.direct_texels >= 0) return box <= o_.direct_texels;
+        return box <= 256.0 * walks && box * std::min(1.0, 64 * share) <= 32.0 * walks;
     }
 
     // The sum over the texels under A's bounding box of their weight in A times factor(their
     // bin), and the normaliser (|A|, or the number of centres in A) in `total`: the same weights
-    // as the tree walks (only the order of the sums differs). A weight is computed only where
-    // the factor is not 0, except the centres that texel_center's normaliser counts.
+    // as the tree walks (only the order of the sums differs). Blocks of the bin map whose palettes
+    // hold no bin of nonzero factor are skipped.
     template <class Factor>
     double texel_sum(const footprint& f, Factor&& factor, double& total) const {
         const bool exact = o_.rule == coverage_rule::exact_area;
-        double sum = 0, centres = 0;
+        const std::size_t width = wide_bins() ? 4 : 2;
+        const auto relevant = [&](const std::uint8_t* b) {
+            if (b[0] == 16) return true;
+            for (int i = 0; i <= b[1]; ++i)
+                if (factor(read_bin(b + 2 + static_cast<std::size_t>(i) * width)) != 0) return true;
+            return false;
+        };
+        double sum = 0;
         const long x0 = static_cast<long>(std::floor(f.lo.x)), x1 = static_cast<long>(std::floor(f.hi.x));
         const long y0 = static_cast<long>(std::floor(f.lo.y)), y1 = static_cast<long>(std::floor(f.hi.y));
-        for (long y = y0; y <= y1; ++y) {
-            const int wy = static_cast<int>(((y % h_) + h_) % h_);
-            long wx = ((x0 % w_) + w_) % w_;
-            for (long x = x0; x <= x1; ++x, wx = wx + 1 == w_ ? 0 : wx + 1) {
-                const double gx = static_cast<double>(x), gy = static_cast<double>(y);
-                const double k = factor(texel_bin(static_cast<int>(wx), wy));
-                if (exact) {
-                    if (k == 0) continue;
-                    const overlap c = classify(f, gx, gy, gx + 1, gy + 1);
-                    sum += k * (c == overlap::inside ? 1.0 : c == overlap::outside ? 0.0 : texel_area(f, gx, gy));
-                } else if (centre_in(f, gx, gy)) {
-                    centres += 1, sum += k;
-                }
+        const auto wrap = [](long v, int period) { return static_cast<int>(((v % period) + period) % period); };
+        // Block by block (a block's texels in one tile copy: rows ya..yb, columns xa..xb, global).
+        for (long ya = y0; ya <= y1;) {
+            const int wy = wrap(ya, h_);
+            const long yb = std::min(y1, ya + (std::min(wy | 7, h_ - 1) - wy));
+            for (long xa = x0; xa <= x1;) {
+                const int wx = wrap(xa, w_);
+                const long xb = std::min(x1, xa + (std::min(wx | 7, w_ - 1) - wx));
+                const double gx0 = static_cast<double>(xa), gy0 = static_cast<double>(ya);
+                const overlap cb = classify(f, gx0, gy0, static_cast<double>(xb + 1), static_cast<double>(yb + 1));
+                const std::size_t block = static_cast<std::size_t>(wx >> 3) + static_cast<std::size_t>(wy >> 3) * static_cast<std::size_t>(blocks_x_);
+                if (cb != overlap::outside && relevant(&block_data_[block_offset_[block]]))
+                    for (long y = ya; y <= yb; ++y)
+                        for (long x = xa; x <= xb; ++x) {
+                            const double k = factor(texel_bin(wx + static_cast<int>(x - xa), wy + static_cast<int>(y - ya)));
+                            if (k == 0) continue;
+                            const double gx = static_cast<double>(x), gy = static_cast<double>(y);
+                            if (exact) {
+                                sum += k * (cb == overlap::inside ? 1.0 : texel_weight(f, gx, gy));
+                            } else if (centre_in(f, gx, gy)) {
+                                sum += k;
+                            }
+                        }
+                xa = xb + 1;
             }
+            ya = yb + 1;
         }
-        total = exact ? f.area : centres;
+        total = exact ? f.area : centre_total(f);
         return sum;
-    }
-
-    // pdf_of through texel_sum (direct(f) holds).
-    double pdf_direct(const footprint& f, const glm::dvec3& h, const glm::dvec2& q) const {
-        const double density = static_cast<double>(bin_count()) / (2 * pi());
-        double sum, total;
-        if (o_.kernel == bin_kernel::box) {
-            const std::uint32_t jb = cell_of(q);
-            sum = density * texel_sum(f, [&](std::uint32_t b) { return b == jb ? 1.0 : 0.0; }, total);
-        } else if (o_.kernel == bin_kernel::tent) {
-            std::uint32_t bins[4];
-            double weights[4];
-            const int taps = tent_taps(q, bins, weights);
-            sum = density * texel_sum(
-                                f,
-                                [&](std::uint32_t b) {
-                                    for (int i = 0; i < taps; ++i)
-                                        if (b == bins[i]) return weights[i];
-                                    return 0.0;
-                                },
-                                total);
-        } else {
-            const std::uint32_t jh = cell_of(q), n = static_cast<std::uint32_t>(n_);
-            const int hx = static_cast<int>(jh % n), hy = static_cast<int>(jh / n);
-            std::uint32_t last = no_bin;
-            double last_k = 0;
-            sum = texel_sum(
-                f,
-                [&](std::uint32_t b) {
-                    if (b != last) {
-                        // Bins farther than the lobe's reach (check_options: 30 cells) cannot hold h.
-                        const int bx = static_cast<int>(b % n), by = static_cast<int>(b / n);
-                        last = b, last_k = std::abs(bx - hx) <= 31 && std::abs(by - hy) <= 31 ? lobe(bin_center_d(b), h) : 0.0;
-                    }
-                    return last_k;
-                },
-                total);
-        }
-        if (!(total > 0)) return pdf_taps(f, h, q);  // texel_center with no centre in A: the point query
-        return sum / total;
     }
 
     // The bin cell holding the square's point q.
@@ -826,26 +848,13 @@ private:
         return taps;
     }
 
-    double pdf_of(const footprint& f, const glm::dvec3& h) const {
-        const glm::dvec2 q = hemisphere_to_square(h);
-        return direct(f) ? pdf_direct(f, h, q) : pdf_taps(f, h, q);
-    }
-
-    // pdf_of as the kernel's taps times their coverages, each from its bin's tree walk.
-    double pdf_taps(const footprint& f, const glm::dvec3& h, const glm::dvec2& q) const {
-        const double density = static_cast<double>(bin_count()) / (2 * pi());  // per solid angle, of c_j = 1
-        if (o_.kernel == bin_kernel::box) return coverage_of(f, cell_of(q)) * density;
-        if (o_.kernel == bin_kernel::tent) {
-            std::uint32_t bins[4];
-            double weights[4], sum = 0;
-            const int taps = tent_taps(q, bins, weights);
-            for (int i = 0; i < taps; ++i) sum += weights[i] * coverage_of(f, bins[i]);
-            return density * sum;
-        }
-        // beckmann: every bin whose centre is within the cap of h, found by a flood fill over the
-        // cells from h's own; a cell joins the fill while its centre is within the cap plus one
-        // cell radius (the cells along the great circle from h to any centre in the cap do), in a
-        // 64 x 64 window (check_options bounds the reach by 30 cells).
+    // Calls fn(bin, lobe at h) for every bin of the beckmann kernel whose centre lies in the cap
+    // of h and which holds texels: a flood fill over the cells from h's own, which a cell joins
+    // while its centre is within the cap plus one cell radius (the cells along the great circle
+    // from h to any centre in the cap do), in a 64 x 64 window (check_options bounds the reach by
+    // 30 cells).
+    template <class Fn>
+    void for_each_lobe(const glm::dvec3& h, const glm::dvec2& q, Fn&& fn) const {
         const std::uint32_t jh = cell_of(q);
         const int hx = static_cast<int>(jh % static_cast<std::uint32_t>(n_)), hy = static_cast<int>(jh / static_cast<std::uint32_t>(n_));
         std::uint64_t seen[64] = {};
@@ -860,7 +869,6 @@ private:
             stack[top++] = static_cast<std::uint16_t>(lx + 64 * ly);
         };
         visit(hx, hy);
-        double sum = 0;
         while (top > 0) {
             const int l = stack[--top];
             const int x = l % 64 + hx - 32, y = l / 64 + hy - 32;
@@ -870,11 +878,87 @@ private:
             if (!(c >= cos_reach_)) continue;
             if (c >= cos_cap_ && bin_texels(j) > 0) {
                 const double k = lobe(m, h);
-                if (k > 0) sum += coverage_of(f, j) * k;
+                if (k > 0) fn(j, k);
             }
             for (int dy = -1; dy <= 1; ++dy)
                 for (int dx = -1; dx <= 1; ++dx) visit(x + dx, y + dy);
         }
+    }
+
+    // A bin the kernel reads at h, with the kernel's value there for coverage 1 (per solid angle).
+    struct tap {
+        std::uint32_t bin;
+        double weight;
+    };
+    static constexpr int max_taps = 1024;
+
+    // The kernel's taps at h over bins that hold texels; -1 when there are more than max_taps
+    // (beckmann caps over many bins).
+    int kernel_taps(const glm::dvec3& h, const glm::dvec2& q, tap* taps) const {
+        const double density = static_cast<double>(bin_count()) / (2 * pi());  // of a bin with coverage 1
+        int count = 0;
+        if (o_.kernel == bin_kernel::box) {
+            const std::uint32_t b = cell_of(q);
+            if (bin_texels(b) > 0) taps[count++] = {b, density};
+        } else if (o_.kernel == bin_kernel::tent) {
+            std::uint32_t bins[4];
+            double weights[4];
+            const int n = tent_taps(q, bins, weights);
+            for (int i = 0; i < n; ++i)
+                if (bin_texels(bins[i]) > 0) taps[count++] = {bins[i], weights[i] * density};
+        } else {
+            for_each_lobe(h, q, [&](std::uint32_t b, double k) {
+                if (count >= 0 && count < max_taps) taps[count++] = {b, k};
+                else count = -1;
+            });
+        }
+        return count;
+    }
+
+    // p_A(h) = sum over the kernel's taps of weight x coverage: by visiting the texels under A
+    // where that is cheaper (direct), else by walking each tap's list.
+    double pdf_of(const footprint& f, const glm::dvec3& h) const {
+        const glm::dvec2 q = hemisphere_to_square(h);
+        if (o_.kernel == bin_kernel::beckmann && direct(f, 1.0 / 64, 16)) {
+            // The lobes of the bins under A only (the cap's other bins may be many), each once per
+            // run of texels in its bin.
+            const std::uint32_t jh = cell_of(q), n = static_cast<std::uint32_t>(n_);
+            const int hx = static_cast<int>(jh % n), hy = static_cast<int>(jh / n);
+            std::uint32_t last = no_bin;
+            double last_k = 0, total;
+            const double s = texel_sum(
+                f,
+                [&](std::uint32_t b) {
+                    if (b != last) {
+                        // Bins farther than the lobe's reach (check_options: 30 cells) cannot hold h.
+                        const int bx = static_cast<int>(b % n), by = static_cast<int>(b / n);
+                        last = b, last_k = std::abs(bx - hx) <= 31 && std::abs(by - hy) <= 31 ? lobe(bin_center_d(b), h) : 0.0;
+                    }
+                    return last_k;
+                },
+                total);
+            if (total > 0) return s / total;  // (texel_center with no centre in A: the point query below)
+        }
+        tap taps[max_taps];
+        const int count = kernel_taps(h, q, taps);
+        double sum = 0;
+        if (count < 0) {
+            for_each_lobe(h, q, [&](std::uint32_t b, double k) { sum += k * coverage_of(f, b); });
+            return sum;
+        }
+        double share = 0;
+        for (int i = 0; i < count; ++i) share += static_cast<double>(bin_texels(taps[i].bin)) / static_cast<double>(stats_.texels);
+        if (count > 0 && o_.kernel != bin_kernel::beckmann && direct(f, share, count)) {
+            std::sort(taps, taps + count, [](const tap& a, const tap& b) { return a.bin < b.bin; });
+            const auto factor = [&](std::uint32_t b) {
+                const tap* t = std::lower_bound(taps, taps + count, b, [](const tap& a, std::uint32_t v) { return a.bin < v; });
+                return t != taps + count && t->bin == b ? t->weight : 0.0;
+            };
+            double total;
+            const double s = texel_sum(f, factor, total);
+            if (total > 0) return s / total;  // (texel_center with no centre in A: the point query below)
+        }
+        for (int i = 0; i < count; ++i) sum += taps[i].weight * coverage_of(f, taps[i].bin);
         return sum;
     }
 

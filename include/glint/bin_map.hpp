@@ -764,9 +764,8 @@ private:
     // palettes let the visit skip the blocks without the kernel's bins) and the texels likely to
     // be visited, the box's times the share of blocks that may hold those bins (at most 64 times
     // their share of the map's texels), are at most 32 per walk. `share`: the kernel's bins'
-    // share of the map's texels (beckmann: 1 / 64 and 16 walks, a box of up to 4096 texels, as
-    // its walks are many and its bins unknown before the cap's flood fill). The constants are
-    // the crossovers of bench/report_bin_map.cpp's timings on flakes and scratched metal.
+    // share of the map's texels (beckmann: direct_lobes). The constants are the crossovers of
+    // bench/report_bin_map.cpp's timings on flakes and scratched metal.
     bool direct(const footprint& f, double share, int walks) const {
         if (f.point || beyond_copies(f)) return false;
         const double box = (std::floor(f.hi.x) - std::floor(f.lo.x) + 1) * (std::floor(f.hi.y) - std::floor(f.lo.y) + 1);
@@ -777,9 +776,10 @@ private:
     // The sum over the texels under A's bounding box of their weight in A times factor(their
     // bin), and the normaliser (|A|, or the number of centres in A) in `total`: the same weights
     // as the tree walks (only the order of the sums differs). Blocks of the bin map whose palettes
-    // hold no bin of nonzero factor are skipped.
+    // hold no bin of nonzero factor are skipped. Gives up (total = -1) after visiting `budget`
+    // texels of relevant blocks.
     template <class Factor>
-    double texel_sum(const footprint& f, Factor&& factor, double& total) const {
+    double texel_sum(const footprint& f, Factor&& factor, double& total, double budget = 1e300) const {
         const bool exact = o_.rule == coverage_rule::exact_area;
         const std::size_t width = wide_bins() ? 4 : 2;
         const auto relevant = [&](const std::uint8_t* b) {
@@ -792,17 +792,24 @@ private:
         const long x0 = static_cast<long>(std::floor(f.lo.x)), x1 = static_cast<long>(std::floor(f.hi.x));
         const long y0 = static_cast<long>(std::floor(f.lo.y)), y1 = static_cast<long>(std::floor(f.hi.y));
         const auto wrap = [](long v, int period) { return static_cast<int>(((v % period) + period) % period); };
-        // Block by block (a block's texels in one tile copy: rows ya..yb, columns xa..xb, global).
+        // Block by block (a block's texels in one tile copy: rows ya..yb, columns xa..xb, global;
+        // wy and wx where they lie in the map).
+        const int wx0 = wrap(x0, w_);
+        int wy = wrap(y0, h_);
         for (long ya = y0; ya <= y1;) {
-            const int wy = wrap(ya, h_);
             const long yb = std::min(y1, ya + (std::min(wy | 7, h_ - 1) - wy));
+            int wx = wx0;
             for (long xa = x0; xa <= x1;) {
-                const int wx = wrap(xa, w_);
                 const long xb = std::min(x1, xa + (std::min(wx | 7, w_ - 1) - wx));
                 const double gx0 = static_cast<double>(xa), gy0 = static_cast<double>(ya);
                 const overlap cb = classify(f, gx0, gy0, static_cast<double>(xb + 1), static_cast<double>(yb + 1));
                 const std::size_t block = static_cast<std::size_t>(wx >> 3) + static_cast<std::size_t>(wy >> 3) * static_cast<std::size_t>(blocks_x_);
-                if (cb != overlap::outside && relevant(&block_data_[block_offset_[block]]))
+                if (cb != overlap::outside && relevant(&block_data_[block_offset_[block]])) {
+                    budget -= static_cast<double>((yb - ya + 1) * (xb - xa + 1));
+                    if (budget < 0) {
+                        total = -1;
+                        return 0;
+                    }
                     for (long y = ya; y <= yb; ++y)
                         for (long x = xa; x <= xb; ++x) {
                             const double k = factor(texel_bin(wx + static_cast<int>(x - xa), wy + static_cast<int>(y - ya)));
@@ -814,12 +821,36 @@ private:
                                 sum += k;
                             }
                         }
-                xa = xb + 1;
+                }
+                wx += static_cast<int>(xb - xa + 1), xa = xb + 1;
+                if (wx == w_) wx = 0;
             }
-            ya = yb + 1;
+            wy += static_cast<int>(yb - ya + 1), ya = yb + 1;
+            if (wy == h_) wy = 0;
         }
         total = exact ? f.area : centre_total(f);
         return sum;
+    }
+
+    // Whether the beckmann kernel tries the texel visit first: its walks are many (one per bin of
+    // the cap that holds texels) and its bins unknown before the cap's flood fill, so the visit is
+    // tried on boxes of up to 1024 texels, and up to 16384 (256 blocks' palettes) unless the 3 x 3
+    // bins around h hold 5% of the map (a flat map's pole: every block would count), with a
+    // budget of 1024 texels; direct_texels >= 0 decides as for the other kernels.
+    bool direct_lobes(const footprint& f, const glm::dvec2& q) const {
+        if (o_.direct_texels >= 0 || f.point || beyond_copies(f)) return direct(f, 1, 1);
+        const double box = (std::floor(f.hi.x) - std::floor(f.lo.x) + 1) * (std::floor(f.hi.y) - std::floor(f.lo.y) + 1);
+        return box <= 1024 || (box <= 16384 && cells_share(q) < 0.05);
+    }
+
+    // The share of the map's texels in the 3 x 3 bins around q's.
+    double cells_share(const glm::dvec2& q) const {
+        const std::uint32_t c = cell_of(q), n = static_cast<std::uint32_t>(n_);
+        const int cx = static_cast<int>(c % n), cy = static_cast<int>(c / n);
+        double texels = 0;
+        for (int y = std::max(cy - 1, 0); y <= std::min(cy + 1, n_ - 1); ++y)
+            for (int x = std::max(cx - 1, 0); x <= std::min(cx + 1, n_ - 1); ++x) texels += bin_texels(static_cast<std::uint32_t>(x + y * n_));
+        return texels / static_cast<double>(stats_.texels);
     }
 
     // The bin cell holding the square's point q.
@@ -919,9 +950,9 @@ private:
     // where that is cheaper (direct), else by walking each tap's list.
     double pdf_of(const footprint& f, const glm::dvec3& h) const {
         const glm::dvec2 q = hemisphere_to_square(h);
-        if (o_.kernel == bin_kernel::beckmann && direct(f, 1.0 / 64, 16)) {
+        if (o_.kernel == bin_kernel::beckmann && direct_lobes(f, q)) {
             // The lobes of the bins under A only (the cap's other bins may be many), each once per
-            // run of texels in its bin.
+            // run of texels in its bin; given up after 1024 texels of relevant blocks.
             const std::uint32_t jh = cell_of(q), n = static_cast<std::uint32_t>(n_);
             const int hx = static_cast<int>(jh % n), hy = static_cast<int>(jh / n);
             std::uint32_t last = no_bin;
@@ -936,8 +967,8 @@ private:
                     }
                     return last_k;
                 },
-                total);
-            if (total > 0) return s / total;  // (texel_center with no centre in A: the point query below)
+                total, o_.direct_texels >= 0 ? 1e300 : 1024);
+            if (total > 0) return s / total;  // (given up, or texel_center with no centre in A: the walks below)
         }
         tap taps[max_taps];
         const int count = kernel_taps(h, q, taps);

@@ -47,19 +47,27 @@
 // point query (the texel holding its centre gets coverage 1), and so is a texel_center footprint
 // that holds no centre; a footprint with a non-finite number gives pdf 0 and no sample.
 //
-// Data (AKKW Sec. 2.3). Per texel its bin (16 bits when B <= 65536, else 32; the normals are not
-// kept); per bin the list of its texels ((y << 16) | x, so sides up to 65536) in one array with an
-// offset per bin (the talk's hash map is not needed: the offsets are dense); the lists are ordered
-// by the preorder of the implicit kd tree that halves the longer side of the whole texture (child 0
-// takes floor(side / 2), x on ties), so every node's texels are contiguous in every list. Each list
-// longer than leaf_size gets its own tree over the same implicit splits: nodes in preorder, each
-// the offset where its child 1's texels start and the index of child 1's node; a child with at
-// most leaf_size texels is a leaf (scanned), with none it is skipped. Build: one preorder pass over
-// the texture, a counting sort by bin (stable, so each list stays in preorder), and a binary search
-// per tree node: O(texels + bins) but for the searches.
+// Data (AKKW Sec. 2.3: "the two N-element integer maps B and B^-1" and a kd forest over B^-1).
+// - The inverse bin map: per bin the list of its texels ((y << 12) | x in 3 bytes for sides up
+//   to 4096, (y << 16) | x in 4 up to 65536), all lists in one array with an offset per bin (the
+//   talk's hash map is not needed: the offsets are dense). Each list is in the preorder of one
+//   implicit kd tree over the whole texture, which halves the longer side (child 0 takes
+//   floor(side / 2), x on ties), so every node's texels are contiguous in every list: the forest
+//   of the talk with all trees sharing their splits, and with no node stored. A walk finds a
+//   node's split point from its first and last texels (one child empty: most of a sparse bin's
+//   path from the root) or by binary search over their coordinates, and scans a node of at most
+//   leaf_size texels.
+// - The bin map: per 8 x 8 block of texels a palette of its distinct bins and an index of 0, 1,
+//   2, 4 or 8 bits per texel (16- or 32-bit bins where a palette would cost more): about 0.5 bytes
+//   per texel on glinty maps instead of 2. A small footprint may visit its texels directly
+//   through it (bin_map::direct), skipping the blocks whose palettes hold none of the bins its
+//   kernel reads: the same weights as the walks, so the same result up to the order of the sums.
+// - Build: the bins, one preorder pass over the texture scattering each texel into its bin's list
+//   (a counting sort, stable), and the blocks' palettes: O(texels + bins).
 //
 // Per-pixel calls (eval, sample, coverage, count) are const, allocation-free, never throw,
-// and are safe to call from many threads.
+// and are safe to call from many threads; they use about 26 KB of stack (the kernel's taps and
+// the lobe search's window), none of it on the heap.
 #pragma once
 
 #include <algorithm>
@@ -160,7 +168,7 @@ public:
         if (o.kernel == bin_kernel::beckmann) {
             if (!(o.alpha >= 0.0025 && o.alpha <= 0.5)) bad("alpha " + std::to_string(o.alpha) + " is outside [0.0025, 0.5]");
             if (!(o.epsilon >= 1e-4 && o.epsilon <= 0.2)) bad("epsilon " + std::to_string(o.epsilon) + " is outside [1e-4, 0.2]");
-            // The bins a lobe reaches must fit the query's 64 x 64 window of cells (lobe_window).
+            // The bins a lobe reaches must fit the query's 64 x 64 window of cells (for_each_lobe).
             const double reach = lobe_reach_cells(o);
             if (reach > 30)
                 bad("alpha " + std::to_string(o.alpha) + " spans about " + std::to_string(static_cast<int>(reach)) + " bins at bins_per_side " +
@@ -277,8 +285,12 @@ public:
     // The bin of texel (x, y), 0 <= x < width, 0 <= y < height.
     std::uint32_t texel_bin(int x, int y) const {
         const int bx = x >> 3, by = y >> 3;
-        const std::uint8_t* b = &block_data_[block_offset_[static_cast<std::size_t>(bx) + static_cast<std::size_t>(by) * static_cast<std::size_t>(blocks_x_)]];
-        const unsigned slot = static_cast<unsigned>((x & 7) + 8 * (y & 7)), bits = b[0];
+        return block_bin(&block_data_[block_offset_[static_cast<std::size_t>(bx) + static_cast<std::size_t>(by) * static_cast<std::size_t>(blocks_x_)]],
+                         static_cast<unsigned>((x & 7) + 8 * (y & 7)));
+    }
+    // The bin in slot (x & 7) + 8 (y & 7) of the block at b (compress_bins).
+    std::uint32_t block_bin(const std::uint8_t* b, unsigned slot) const {
+        const unsigned bits = b[0];
         const std::size_t width = wide_bins() ? 4 : 2;
         const std::uint8_t* at;
         if (bits == 16) {
@@ -335,7 +347,8 @@ public:
     bin_sample<real> sample(const uv_parallelogram<real>& A, const vec2& u_pos, const vec2& u_dir) const {
         bin_sample<real> out;
         const footprint f = prepare(A);
-        if (!f.finite) return out;
+        const auto finite = [](const vec2& v) { return std::isfinite(v.x) && std::isfinite(v.y); };
+        if (!f.finite || !finite(u_pos) || !finite(u_dir)) return out;
         const std::uint32_t j = sample_texel_bin(f, glm::dvec2(u_pos));
         const int jx = static_cast<int>(j % static_cast<std::uint32_t>(n_)), jy = static_cast<int>(j / static_cast<std::uint32_t>(n_));
         const glm::dvec2 u = glm::clamp(glm::dvec2(u_dir), 0.0, std::nextafter(1.0, 0.0));
@@ -773,13 +786,15 @@ private:
         return box <= 256.0 * walks && box * std::min(1.0, 64 * share) <= 32.0 * walks;
     }
 
+    // The normaliser of the coverages: |A|, or the number of texel centres in A.
+    double normaliser(const footprint& f) const { return o_.rule == coverage_rule::exact_area ? f.area : centre_total(f); }
+
     // The sum over the texels under A's bounding box of their weight in A times factor(their
-    // bin), and the normaliser (|A|, or the number of centres in A) in `total`: the same weights
-    // as the tree walks (only the order of the sums differs). Blocks of the bin map whose palettes
-    // hold no bin of nonzero factor are skipped. Gives up (total = -1) after visiting `budget`
-    // texels of relevant blocks.
+    // bin) (factor >= 0): the same weights as the walks (only the order of the sums differs).
+    // Blocks of the bin map whose palettes hold no bin of nonzero factor are skipped. Gives up
+    // (returns -1) after visiting `budget` texels of relevant blocks.
     template <class Factor>
-    double texel_sum(const footprint& f, Factor&& factor, double& total, double budget = 1e300) const {
+    double texel_sum(const footprint& f, Factor&& factor, double budget = 1e300) const {
         const bool exact = o_.rule == coverage_rule::exact_area;
         const std::size_t width = wide_bins() ? 4 : 2;
         const auto relevant = [&](const std::uint8_t* b) {
@@ -804,15 +819,13 @@ private:
                 const double gx0 = static_cast<double>(xa), gy0 = static_cast<double>(ya);
                 const overlap cb = classify(f, gx0, gy0, static_cast<double>(xb + 1), static_cast<double>(yb + 1));
                 const std::size_t block = static_cast<std::size_t>(wx >> 3) + static_cast<std::size_t>(wy >> 3) * static_cast<std::size_t>(blocks_x_);
-                if (cb != overlap::outside && relevant(&block_data_[block_offset_[block]])) {
+                const std::uint8_t* data = &block_data_[block_offset_[block]];
+                if (cb != overlap::outside && relevant(data)) {
                     budget -= static_cast<double>((yb - ya + 1) * (xb - xa + 1));
-                    if (budget < 0) {
-                        total = -1;
-                        return 0;
-                    }
+                    if (budget < 0) return -1;
                     for (long y = ya; y <= yb; ++y)
                         for (long x = xa; x <= xb; ++x) {
-                            const double k = factor(texel_bin(wx + static_cast<int>(x - xa), wy + static_cast<int>(y - ya)));
+                            const double k = factor(block_bin(data, static_cast<unsigned>(((wx + static_cast<int>(x - xa)) & 7) + 8 * ((wy + static_cast<int>(y - ya)) & 7))));
                             if (k == 0) continue;
                             const double gx = static_cast<double>(x), gy = static_cast<double>(y);
                             if (exact) {
@@ -828,7 +841,6 @@ private:
             wy += static_cast<int>(yb - ya + 1), ya = yb + 1;
             if (wy == h_) wy = 0;
         }
-        total = exact ? f.area : centre_total(f);
         return sum;
     }
 
@@ -946,17 +958,20 @@ private:
         return count;
     }
 
-    // p_A(h) = sum over the kernel's taps of weight x coverage: by visiting the texels under A
-    // where that is cheaper (direct), else by walking each tap's list.
+    // p_A(h) = sum over the kernel's taps of weight x coverage: the bins a small footprint holds
+    // visited directly, dense bins (more than 1 / 1024 of the map's texels: a flat map's pole)
+    // walked, and the others visited where that is cheaper (direct), else walked.
     double pdf_of(const footprint& f, const glm::dvec3& h) const {
         const glm::dvec2 q = hemisphere_to_square(h);
-        if (o_.kernel == bin_kernel::beckmann && direct_lobes(f, q)) {
+        const bool plain = !f.point && !beyond_copies(f);
+        const double total = plain ? normaliser(f) : 0;
+        if (o_.kernel == bin_kernel::beckmann && plain && total > 0 && direct_lobes(f, q)) {
             // The lobes of the bins under A only (the cap's other bins may be many), each once per
             // run of texels in its bin; given up after 1024 texels of relevant blocks.
             const std::uint32_t jh = cell_of(q), n = static_cast<std::uint32_t>(n_);
             const int hx = static_cast<int>(jh % n), hy = static_cast<int>(jh / n);
             std::uint32_t last = no_bin;
-            double last_k = 0, total;
+            double last_k = 0;
             const double s = texel_sum(
                 f,
                 [&](std::uint32_t b) {
@@ -967,30 +982,41 @@ private:
                     }
                     return last_k;
                 },
-                total, o_.direct_texels >= 0 ? 1e300 : 1024);
-            if (total > 0) return s / total;  // (given up, or texel_center with no centre in A: the walks below)
+                o_.direct_texels >= 0 ? 1e300 : 1024);
+            if (s >= 0) return s / total;
         }
         tap taps[max_taps];
         const int count = kernel_taps(h, q, taps);
         double sum = 0;
-        if (count < 0) {
-            for_each_lobe(h, q, [&](std::uint32_t b, double k) { sum += k * coverage_of(f, b); });
+        if (count < 0 || !plain || !(total > 0)) {
+            // A point, beyond the tile copies, texel_center with no centre in A, or a cap over more
+            // than max_taps bins: coverage_of's cases, tap by tap.
+            if (count < 0) for_each_lobe(h, q, [&](std::uint32_t b, double k) { sum += k * coverage_of(f, b); });
+            for (int i = 0; i < count; ++i) sum += taps[i].weight * coverage_of(f, taps[i].bin);
             return sum;
         }
+        const double texels = static_cast<double>(stats_.texels);
+        const tap* dense = std::partition(taps, taps + count, [&](const tap& t) { return bin_texels(t.bin) <= texels / 1024; });
+        const int sparse = static_cast<int>(dense - taps);
         double share = 0;
-        for (int i = 0; i < count; ++i) share += static_cast<double>(bin_texels(taps[i].bin)) / static_cast<double>(stats_.texels);
-        if (count > 0 && o_.kernel != bin_kernel::beckmann && direct(f, share, count)) {
-            std::sort(taps, taps + count, [](const tap& a, const tap& b) { return a.bin < b.bin; });
-            const auto factor = [&](std::uint32_t b) {
-                const tap* t = std::lower_bound(taps, taps + count, b, [](const tap& a, std::uint32_t v) { return a.bin < v; });
-                return t != taps + count && t->bin == b ? t->weight : 0.0;
-            };
-            double total;
-            const double s = texel_sum(f, factor, total);
-            if (total > 0) return s / total;  // (texel_center with no centre in A: the point query below)
+        for (int i = 0; i < sparse; ++i) share += static_cast<double>(bin_texels(taps[i].bin)) / texels;
+        int walked = 0;
+        if (sparse > 0 && direct(f, share, sparse)) {
+            std::sort(taps, taps + sparse, [](const tap& a, const tap& b) { return a.bin < b.bin; });
+            sum += texel_sum(f, [&](std::uint32_t b) {
+                if (sparse <= 4) {
+                    for (int i = 0; i < sparse; ++i)
+                        if (taps[i].bin == b) return taps[i].weight;
+                    return 0.0;
+                }
+                const tap* t = std::lower_bound(taps, taps + sparse, b, [](const tap& a, std::uint32_t v) { return a.bin < v; });
+                return t != taps + sparse && t->bin == b ? t->weight : 0.0;
+            });
+            walked = sparse;
         }
-        for (int i = 0; i < count; ++i) sum += taps[i].weight * coverage_of(f, taps[i].bin);
-        return sum;
+        const bool exact = o_.rule == coverage_rule::exact_area;
+        for (int i = walked; i < count; ++i) sum += taps[i].weight * bin_weight(f, taps[i].bin, exact);
+        return sum / total;
     }
 
     // The bin of a texel drawn by its weight in A (u in [0, 1)^2).

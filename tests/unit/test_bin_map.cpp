@@ -362,6 +362,7 @@ TEST_CASE("bin_map: hard footprints") {
         CHECK(m.count(A, 0) == 0);
     }
     CHECK(m.eval(glint::uv_parallelogram<double>::rect({0, 0}, {0.5, 0.5}), {nan, 0, 1}).pdf == 0);
+    CHECK_FALSE(m.sample(glint::uv_parallelogram<double>::rect({0, 0}, {0.5, 0.5}), {nan, 0.5}, {0.5, 0.5}).valid);
     // 1000:1 at 30 degrees: exact against the clip, and sums to 1.
     const double t = 0.5235987755982988;
     const glint::uv_parallelogram<double> thin{{0.31, 0.77}, {40.0 * std::cos(t) / w, 40.0 * std::sin(t) / h}, {-0.04 * std::sin(t) / w, 0.04 * std::cos(t) / h}};
@@ -386,6 +387,35 @@ TEST_CASE("bin_map: hard footprints") {
         }
         CHECK(mk.eval(A, {0.6, 0, -0.8}).pdf == 0);
     }
+}
+
+TEST_CASE("bin_map: 1e5 random float queries give finite, non-negative results") {
+    // Footprints from 1e-6 to 1e6 texels, aspect to 1e6, anywhere within 1e4 periods; h anywhere
+    // on the sphere (below the horizon too); every kernel and rule.
+    const auto map = random_normals(24, 17, 31u, 1.2);
+    long bad = 0, queries = 0;
+    for (const auto kernel : {glint::bin_kernel::box, glint::bin_kernel::tent, glint::bin_kernel::beckmann})
+        for (const auto rule : {glint::coverage_rule::exact_area, glint::coverage_rule::texel_center}) {
+            glint::bin_map_options o = opts(16, 4, rule);
+            o.kernel = kernel, o.alpha = 0.05;
+            const auto m = glint::bin_map<float>::build(map, o);
+            for (std::uint32_t i = 0; i < 16667; ++i) {
+                const auto u = [&](std::uint32_t k) { return glint::unit_from_bits<float>(glint::pcg3d(glm::uvec3(i, k, 0x77u)).x); };
+                const float size = std::pow(10.0f, -6 + 12 * u(0)) / 24, ratio = std::pow(10.0f, 6 * u(1)), t = 6.2831853f * u(2);
+                glint::uv_parallelogram<float> A;
+                A.e0 = size * glm::vec2(std::cos(t), std::sin(t)), A.e1 = size / ratio * glm::vec2(-std::sin(t), std::cos(t));
+                A.origin = glm::vec2(2e4f * (u(3) - 0.5f), 2e4f * (u(4) - 0.5f));
+                const glm::vec3 h = glm::normalize(glm::vec3(2 * u(5) - 1, 2 * u(6) - 1, 2 * u(7) - 0.8f));
+                const auto e = m.eval(A, h);
+                const auto s = m.sample(A, {u(8), u(9)}, {u(10), u(11)});
+                ++queries;
+                if (!(std::isfinite(e.pdf) && std::isfinite(e.ndf) && e.pdf >= 0 && e.ndf >= 0 && std::isfinite(s.pdf) && s.pdf >= 0 &&
+                      std::isfinite(s.h.x) && std::isfinite(s.h.y) && std::isfinite(s.h.z)))
+                    ++bad;
+            }
+        }
+    CHECK(queries == 100002);
+    CHECK(bad == 0);
 }
 
 TEST_CASE("bin_map: bad input is rejected with an error that names it") {

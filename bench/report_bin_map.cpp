@@ -276,8 +276,8 @@ section bin_map_section(double min_time) {
 
     // The knobs at one footprint size: n, leaf size, rule, kernel.
     md << "\n### Knobs\n\n`flakes`, footprint side 64: L1 against the direct P-NDF (as above: 1000 draws per footprint, 8 footprints; the leaf "
-          "size changes no value), ns per eval, build ns per texel, bytes per texel (one run):\n\n"
-          "| n | leaf size | rule | kernel | L1 vs P-NDF | eval ns | build ns / texel | bytes / texel |\n|---|---|---|---|---|---|---|---|\n";
+          "size changes no value), ns per eval and per sample, build ns per texel, bytes per texel (one run):\n\n"
+          "| n | leaf size | rule | kernel | L1 vs P-NDF | eval ns | sample ns | build ns / texel | bytes / texel |\n|---|---|---|---|---|---|---|---|---|\n";
     {
         struct knob {
             int n, leaf;
@@ -300,11 +300,17 @@ section bin_map_section(double min_time) {
             const knob& kb = knobs[k];
             const bmap m = bmap::build(maps[0], options(kb.n, kb.kernel, kb.rule, kb.leaf));
             add_eval("knob", m, q, min_time);
-            const double ns = run_all().at("knob");
+            add("knob_sample", [&m, &q](std::size_t i) {
+                const auto& x = q[i % q.size()];
+                const glm::vec2 u(static_cast<float>(unit(static_cast<std::uint32_t>(i), 1u)), static_cast<float>(unit(static_cast<std::uint32_t>(i), 2u)));
+                benchmark::DoNotOptimize(m.sample(x.A, u, glm::vec2(u.y, u.x)).pdf);
+            }, min_time);
+            const auto times = run_all();
+            const double ns = times.at("knob"), sample_ns = times.at("knob_sample");
             double l1 = 0;
             for (const auto& x : eq) l1 += l1_to_pndf(m, pndf, x, 1000).first / static_cast<double>(eq.size());
             const char* rule = kb.rule == exact ? "exact area" : "texel centre";
-            md << "| " << kb.n << " | " << kb.leaf << " | " << rule << " | " << kernel_name(kb.kernel) << " | " << fmt(l1, "%.3f") << " | " << fmt(ns, "%.0f") << " | "
+            md << "| " << kb.n << " | " << kb.leaf << " | " << rule << " | " << kernel_name(kb.kernel) << " | " << fmt(l1, "%.3f") << " | " << fmt(ns, "%.0f") << " | " << fmt(sample_ns, "%.0f") << " | "
                << fmt(1e9 * m.statistics().build_seconds / texels, "%.0f") << " | " << fmt(static_cast<double>(m.memory_bytes()) / texels, "%.2f") << " |\n";
             out.csv_rows += "bin_map,flakes n=" + std::to_string(kb.n) + " L=" + std::to_string(kb.leaf) + " " + rule + " " + kernel_name(kb.kernel) +
                             " side=64,float,L1 vs direct P-NDF," + fmt(l1) + "," + fmt(ns) + ",,\n";

@@ -795,12 +795,17 @@ private:
     // (returns -1) after visiting `budget` texels of relevant blocks.
     template <class Factor>
     double texel_sum(const footprint& f, Factor&& factor, double budget = 1e300) const {
+        return texel_sum(f, factor, [&](std::uint32_t b) { return factor(b) != 0; }, budget);
+    }
+    // The same, with a cheaper test of whether factor(b) != 0 for the blocks' palettes.
+    template <class Factor, class Nonzero>
+    double texel_sum(const footprint& f, Factor&& factor, Nonzero&& nonzero, double budget) const {
         const bool exact = o_.rule == coverage_rule::exact_area;
         const std::size_t width = wide_bins() ? 4 : 2;
         const auto relevant = [&](const std::uint8_t* b) {
             if (b[0] == 16) return true;
             for (int i = 0; i <= b[1]; ++i)
-                if (factor(read_bin(b + 2 + static_cast<std::size_t>(i) * width)) != 0) return true;
+                if (nonzero(read_bin(b + 2 + static_cast<std::size_t>(i) * width))) return true;
             return false;
         };
         double sum = 0;
@@ -972,17 +977,15 @@ private:
             const int hx = static_cast<int>(jh % n), hy = static_cast<int>(jh / n);
             std::uint32_t last = no_bin;
             double last_k = 0;
+            // Bins farther than the lobe's reach (check_options: 30 cells) cannot hold h.
+            const auto near = [&](std::uint32_t b) { return std::abs(static_cast<int>(b % n) - hx) <= 31 && std::abs(static_cast<int>(b / n) - hy) <= 31; };
             const double s = texel_sum(
                 f,
                 [&](std::uint32_t b) {
-                    if (b != last) {
-                        // Bins farther than the lobe's reach (check_options: 30 cells) cannot hold h.
-                        const int bx = static_cast<int>(b % n), by = static_cast<int>(b / n);
-                        last = b, last_k = std::abs(bx - hx) <= 31 && std::abs(by - hy) <= 31 ? lobe(bin_center_d(b), h) : 0.0;
-                    }
+                    if (b != last) last = b, last_k = near(b) ? lobe(bin_center_d(b), h) : 0.0;
                     return last_k;
                 },
-                o_.direct_texels >= 0 ? 1e300 : 1024);
+                [&](std::uint32_t b) { return near(b) && glm::dot(bin_center_d(b), h) >= cos_cap_; }, o_.direct_texels >= 0 ? 1e300 : 1024);
             if (s >= 0) return s / total;
         }
         tap taps[max_taps];

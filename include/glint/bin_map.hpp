@@ -520,15 +520,43 @@ private:
         return c == overlap::inside ? 1.0 : c == overlap::outside ? 0.0 : texel_area(f, x, y);
     }
 
+    // The area of { (x, y) in [0, 1]^2 : c + gx x + gy y >= 0 }: with the signs of gx and gy made
+    // positive (mirroring the square), b = the larger, s = the smaller / b, the lost part is the
+    // integral over x of clamp((-c - s b x) / b, 0, 1), a clamped linear function.
+    static double half_plane_area(double c, double gx, double gy) {
+        if (gx < 0) c += gx, gx = -gx;
+        if (gy < 0) c += gy, gy = -gy;
+        const double b = std::max(gx, gy), a = std::min(gx, gy);
+        if (!(b > 0)) return c >= 0 ? 1.0 : 0.0;
+        const double p = -c / b, slope = a / b;  // the lost part lies below y = p - slope x
+        double lost;
+        if (slope == 0) {
+            lost = std::clamp(p, 0.0, 1.0);
+        } else {
+            // p - slope x is 1 at x1 and 0 at x0 (x1 < x0); clamp both into [0, 1].
+            const double x1 = std::clamp((p - 1) / slope, 0.0, 1.0), x0 = std::clamp(p / slope, 0.0, 1.0);
+            lost = x1 + (p * (x0 - x1) - 0.5 * slope * (x0 * x0 - x1 * x1));
+        }
+        return std::clamp(1 - lost, 0.0, 1.0);
+    }
+
     // |A n [x, x+1] x [y, y+1]|: the texel's square clipped by A's four half-planes
     // (Sutherland-Hodgman) in texel-local coordinates, then the shoelace formula.
     static double texel_area(const footprint& f, double x, double y) {
-        double buf[2][2][12] = {{{0, 1, 1, 0}, {0, 0, 1, 1}}, {}};  // [polygon][x or y][vertex], ping-pong
-        int count = 4, cur = 0;
         const glm::dvec2 d0(x - f.o.x, y - f.o.y);
         const double a0 = glm::dot(f.ia, d0), b0 = glm::dot(f.ib, d0);
         // Half-planes g(p) = c + gx px + gy py >= 0.
         const double planes[4][3] = {{a0, f.ia.x, f.ia.y}, {1 - a0, -f.ia.x, -f.ia.y}, {b0, f.ib.x, f.ib.y}, {1 - b0, -f.ib.x, -f.ib.y}};
+        // Most texels on A's boundary meet one of its edges only: the kept part of the square is
+        // then a clamped linear integral.
+        int cutting = 0, which = 0;
+        for (int i = 0; i < 4; ++i)
+            if (planes[i][0] + std::min(0.0, planes[i][1]) + std::min(0.0, planes[i][2]) < 0) ++cutting, which = i;
+        if (cutting == 1) return half_plane_area(planes[which][0], planes[which][1], planes[which][2]);
+        double buf[2][2][12];  // [polygon][x or y][vertex], ping-pong
+        const double square[2][4] = {{0, 1, 1, 0}, {0, 0, 1, 1}};
+        for (int i = 0; i < 4; ++i) buf[0][0][i] = square[0][i], buf[0][1][i] = square[1][i];
+        int count = 4, cur = 0;
         for (const auto& g : planes) {
             // A plane that keeps the whole square (most of them, for a texel on one edge of A) is skipped.
             if (g[0] + std::min(0.0, g[1]) + std::min(0.0, g[2]) >= 0) continue;

@@ -60,21 +60,24 @@ std::vector<std::uint64_t> brute_counts(const glint::bin_map<real>& m, const tex
 // The area of P inside the square [x, x+1] x [y, y+1]: P's polygon clipped by the square's four
 // half-planes (the roles reversed from the library's), shoelace.
 inline double clipped_area(const texel_parallelogram& P, double x, double y) {
-    std::vector<glm::dvec2> poly = {P.o - glm::dvec2(x, y), P.o + P.e0 - glm::dvec2(x, y), P.o + P.e0 + P.e1 - glm::dvec2(x, y), P.o + P.e1 - glm::dvec2(x, y)};
+    glm::dvec2 poly[12] = {P.o - glm::dvec2(x, y), P.o + P.e0 - glm::dvec2(x, y), P.o + P.e0 + P.e1 - glm::dvec2(x, y), P.o + P.e1 - glm::dvec2(x, y)};
+    std::size_t n = 4;
     const auto clip = [&](int axis, double bound, bool keep_below) {
-        std::vector<glm::dvec2> out;
-        for (std::size_t i = 0; i < poly.size(); ++i) {
-            const glm::dvec2 p = poly[i], q = poly[(i + 1) % poly.size()];
+        glm::dvec2 out[12];
+        std::size_t m = 0;
+        for (std::size_t i = 0; i < n; ++i) {
+            const glm::dvec2 p = poly[i], q = poly[(i + 1) % n];
             const bool pin = keep_below ? p[axis] <= bound : p[axis] >= bound, qin = keep_below ? q[axis] <= bound : q[axis] >= bound;
-            if (pin) out.push_back(p);
-            if (pin != qin) out.push_back(p + (q - p) * ((bound - p[axis]) / (q[axis] - p[axis])));
+            if (pin) out[m++] = p;
+            if (pin != qin) out[m++] = p + (q - p) * ((bound - p[axis]) / (q[axis] - p[axis]));
         }
-        poly = out;
+        for (std::size_t i = 0; i < m; ++i) poly[i] = out[i];
+        n = m;
     };
     clip(0, 0, false), clip(0, 1, true), clip(1, 0, false), clip(1, 1, true);
     double s = 0;
-    for (std::size_t i = 0; i < poly.size(); ++i) {
-        const glm::dvec2 p = poly[i], q = poly[(i + 1) % poly.size()];
+    for (std::size_t i = 0; i < n; ++i) {
+        const glm::dvec2 p = poly[i], q = poly[(i + 1) % n];
         s += p.x * q.y - q.x * p.y;
     }
     return std::fabs(0.5 * s);

@@ -217,7 +217,7 @@ TEST_CASE("ibl: the same scan rejects the multinomial built on KK25's dual-gated
     CHECK(o.rejected > 0);
 }
 
-TEST_CASE("ibl: a brute-force footprint of N discrete microfacets agrees in mean with K = 4 and K = 8; their spreads are reported") {
+TEST_CASE("ibl: a brute-force footprint of N discrete microfacets agrees in mean with K = 4 and K = 8, their spreads are reported") {
     // Microfacet normals drawn from D(h) / D_H (unprojected area, KK25 Sec. 3.2): GGX slopes by
     // inversion, accepted with probability sqrt(1 + |s|^2) / sqrt(1 + s_max^2) (slopes beyond
     // s_max = 40 alpha are dropped: mass 6e-4 of the slope law). Each reflects the view into

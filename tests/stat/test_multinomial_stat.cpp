@@ -67,7 +67,7 @@ TEST_CASE("marginal means are N p_k for the mean-preserving hierarchy, K = 4 and
     }
 }
 
-TEST_CASE("for N = 1, 2, 3 the mean-preserving hierarchy is the exact multinomial; Alg. 1's is not at N = 3") {
+TEST_CASE("for N = 1, 2, 3 the mean-preserving hierarchy is the exact multinomial, Alg. 1's is not at N = 3") {
     // 4 bins + rest, 2e5 samples; cells: every outcome (c0..c3, rest) with sum N.
     const auto pp = probabilities<4>();
     const double pr[5] = {double(pp[0]), double(pp[1]), double(pp[2]), double(pp[3]), 1.0 - double(pp[0] + pp[1] + pp[2] + pp[3])};

@@ -111,7 +111,7 @@ TEST_CASE("scratch V-groove at normal incidence: two spikes at +-2 beta with the
     CHECK(std::fabs(mass(wrong.rho_m(), 45) - left) > tol);
 }
 
-TEST_CASE("scratch table: raw counts are reciprocal (chi-square over bin pairs); rays at bin centres are not") {
+TEST_CASE("scratch table: raw counts are reciprocal (chi-square over bin pairs), rays at bin centres are not") {
     // Under reciprocity E[count(i -> j)] / E[count(j -> i)] = ds_j / ds_i, so given the pair's total
     // n, count(i -> j) is binomial(n, ds_j / (ds_i + ds_j)). Pairs with n p (1 - p) >= 5 enter
     // individually, the rest pooled into one. M = 32, N = 40,000 rays per row (1.28e6 rays), the steep
@@ -244,7 +244,7 @@ double draw(const glint::scratch_table& t, int o, double u1, double u2, variant 
 
 }  // namespace
 
-TEST_CASE("scratch sampling (Eq. 5): chi-square of phi_i against the pdf, on the cone; wrong variants rejected") {
+TEST_CASE("scratch sampling (Eq. 5): chi-square of phi_i against the pdf, on the cone, wrong variants rejected") {
     // 4 profiles x 5 views, 100,000 draws each through the kernel (double, linear filter: two rows),
     // histogrammed in 4 sub-bins of equal sin(phi) per table bin (M = 32: 128 cells, each's
     // probability exact under the pdf); family alpha 0.01 over the 20 (Sidak). Variants (drawn by the test at phi_o = 45

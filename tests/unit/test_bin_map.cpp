@@ -136,7 +136,7 @@ TEST_CASE("bin_map: tree counts equal brute-force counts exactly, for every bin,
     CHECK(mismatches == 0);
 }
 
-TEST_CASE("bin_map: exact-area coverages against a double clip of every texel; they sum to 1") {
+TEST_CASE("bin_map: exact-area coverages against a double clip of every texel, they sum to 1") {
     for (const auto& [w, h, n, leaf] : std::vector<std::tuple<int, int, int, int>>{{7, 13, 8, 1}, {64, 64, 8, 16}, {100, 37, 16, 4}}) {
         const auto map = random_normals(w, h, 9u);
         const auto m = bmap::build(map, opts(n, leaf));
@@ -173,7 +173,7 @@ TEST_CASE("bin_map: texel_center coverages sum to 1 exactly, and sample the same
     }
 }
 
-TEST_CASE("bin_map: whole tiles give the global histogram; partial tiles converge as 1/k") {
+TEST_CASE("bin_map: whole tiles give the global histogram, partial tiles converge as 1/k") {
     const int w = 48, h = 32;
     const auto m = bmap::build(random_normals(w, h, 12u), opts(8, 16));
     std::vector<double> global(m.bin_count());

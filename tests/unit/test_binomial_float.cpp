@@ -79,7 +79,7 @@ TEST_CASE("positive + negative = N within one ulp of N for N > 2 (dual-gated var
         }
 }
 
-TEST_CASE("counts are non-decreasing in p for fixed random numbers; violation rates per variant") {
+TEST_CASE("counts are non-decreasing in p for fixed random numbers, violation rates per variant") {
     // 256 (u1, u2) pairs x 11 values of N x 400 steps of p from 1e-8 to 1 (log-spaced).
     const float Ns[] = {0.5f, 1.5f, 3.0f, 5.0f, 10.0f, 30.0f, 100.0f, 1e3f, 1e4f, 1e6f, 1e9f};
     double rate[5] = {};

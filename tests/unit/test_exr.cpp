@@ -57,7 +57,7 @@ TEST_CASE("exr: the five environment maps read as 1024 x 512, finite and non-neg
     }
 }
 
-TEST_CASE("exr: write then read returns the pixels within half precision; negative and non-finite pixels read as 0 and are counted") {
+TEST_CASE("exr: write then read returns the pixels within half precision, negative and non-finite pixels read as 0 and are counted") {
     const int w = 7, h = 3;
     std::vector<float> rgb(3 * w * h);
     for (std::size_t i = 0; i < rgb.size(); ++i) rgb[i] = std::pow(10.0f, static_cast<float>(i % 9) - 4.0f) * 1.37f;

@@ -167,7 +167,7 @@ TEST_CASE("gaussian element: the normal marginal is the footprint -> infinity li
     }
 }
 
-TEST_CASE("P-NDF: normalisation within the Poisson-summation bound; the integral over s is the element weight") {
+TEST_CASE("P-NDF: normalisation within the Poisson-summation bound, the integral over s is the element weight") {
     glint::pattern_params pp;
     pp.kind = glint::pattern::noise, pp.width = pp.height = 32, pp.slope_rms = 0.1;
     const glint::normal_map map = glint::make_normal_map(pp);
@@ -319,7 +319,7 @@ TEST_CASE("P-NDF: without the hierarchy eval is the same, in less memory") {
     }
 }
 
-TEST_CASE("P-NDF: hierarchy equals the direct sum; against brute force within the culling error; periodic; continuous") {
+TEST_CASE("P-NDF: hierarchy equals the direct sum, against brute force within the culling error, periodic, continuous") {
     for (const auto kind : {glint::pattern::noise, glint::pattern::brushed, glint::pattern::flakes, glint::pattern::scratches}) {
         glint::pattern_params pp;
         pp.kind = kind, pp.width = pp.height = 64, pp.slope_rms = 0.15;
@@ -399,7 +399,7 @@ TEST_CASE("P-NDF: the continuum limit for footprints of many periods agrees with
     CHECK(worst < 1e-3);  // the lobe culling of the limit (cull_s, compensated) dominates
 }
 
-TEST_CASE("P-NDF float hard cases: grazing footprints, point and huge footprints, sigma_r = 1e-4, z near 0; no NaN in 1e6 queries") {
+TEST_CASE("P-NDF float hard cases: grazing footprints, point and huge footprints, sigma_r = 1e-4, z near 0, no NaN in 1e6 queries") {
     glint::pattern_params pp;
     pp.kind = glint::pattern::noise, pp.width = pp.height = 32, pp.slope_rms = 0.4;
     std::vector<glm::vec3> steep = glint::make_normal_map(pp).normals();
@@ -443,7 +443,7 @@ TEST_CASE("P-NDF float hard cases: grazing footprints, point and huge footprints
     CHECK(positive > 1000);
 }
 
-TEST_CASE("P-NDF: builder errors; BRDF energy of a flat map") {
+TEST_CASE("P-NDF: builder errors, BRDF energy of a flat map") {
     const glint::normal_map map = glint::make_normal_map(glint::pattern_params{});
     glint::gaussian_params<double> g;
     g.elements_per_texel = 3;

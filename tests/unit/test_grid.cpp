@@ -216,7 +216,7 @@ TEST_CASE("grid: the smooth-result gate returns E[R] without drawing exactly whe
     }
 }
 
-TEST_CASE("grid: point lights expect the bilinear mix of the slope cell's corner probabilities; lights that cannot reflect cost nothing") {
+TEST_CASE("grid: point lights expect the bilinear mix of the slope cell's corner probabilities, lights that cannot reflect cost nothing") {
     glint_test::grid_scene s;
     s.kind = glint_test::light_kind::point, s.alpha = 0.3f;
     s.prepare();

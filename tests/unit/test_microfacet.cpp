@@ -174,7 +174,7 @@ TEST_CASE("D_Omega of a light cut by the horizon counts only its part above it")
     }
 }
 
-TEST_CASE("conductor Fresnel equals the complex-amplitude formula; Schlick's end points") {
+TEST_CASE("conductor Fresnel equals the complex-amplitude formula, Schlick's end points") {
     double worst = 0;
     for (double eta : {0.2, 1.0, 1.5, 2.9})
         for (double k : {0.0, 0.5, 3.0, 8.0})

@@ -101,7 +101,7 @@ TEST_CASE("normal_map: interpolation hits the texels, is periodic, and its Jacob
     CHECK(glm::length(c.texel(-5, 0) - n[0]) == 0);
 }
 
-TEST_CASE("normal_map: bicubic approximates a smooth analytic field to third order; from_heights matches the gradient") {
+TEST_CASE("normal_map: bicubic approximates a smooth analytic field to third order, from_heights matches the gradient") {
     glint::pattern_params p;
     p.kind = glint::pattern::sinusoid;
     p.slope_rms = 0.2;
@@ -134,7 +134,7 @@ TEST_CASE("normal_map: bicubic approximates a smooth analytic field to third ord
     CHECK(worst < a * k * k * k / 6 + 1e-6);
 }
 
-TEST_CASE("patterns: periodic, analytic, valid normals; the noise's slope variance is exact") {
+TEST_CASE("patterns: periodic, analytic, valid normals, the noise's slope variance is exact") {
     for (int kind = 0; kind <= static_cast<int>(glint::pattern::scratched_metal); ++kind) {
         glint::pattern_params p;
         p.kind = static_cast<glint::pattern>(kind);

@@ -358,7 +358,7 @@ TEST_CASE("scratch kernels in float: no NaN or Inf at the hard inputs (horizon, 
     CHECK(bad == 0u);
 }
 
-TEST_CASE("scratch material: no scratches is the base BRDF exactly; the culls change nothing measurable; bad input named") {
+TEST_CASE("scratch material: no scratches is the base BRDF exactly, the culls change nothing measurable, bad input named") {
     const auto t = small_table(glint::make_v_groove(30 * deg), glint::scratch_fresnel::iron(), 32, 2000);
     glint::scratch_distribution d;
     d.layers = 8, d.spread_deg = 360, d.length = 0.05, d.width = 0.002, d.density = 0, d.period = 16;

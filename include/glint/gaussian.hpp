@@ -178,17 +178,8 @@ public:
                 const double jf = std::sqrt(q.jacobian[0].x * q.jacobian[0].x + q.jacobian[0].y * q.jacobian[0].y + q.jacobian[1].x * q.jacobian[1].x +
                                             q.jacobian[1].y * q.jacobian[1].y);
                 jmax = std::max(jmax, static_cast<real>(jf));
-                const double sh = static_cast<double>(p.k_.sigma_h), sr = static_cast<double>(g.sigma_r), cu = static_cast<double>(g.cull_u), cs = static_cast<double>(g.cull_s);
-                // The oriented s-box of the header comment: the axes of J J^T (angle theta of its
-                // larger eigenvalue), the radius along each from its singular value; rounded up by
-                // 1e-4 relative plus 1e-6, so that the float kernel's own rounding stays inside.
-                const double m11 = q.jacobian[0].x * q.jacobian[0].x + q.jacobian[1].x * q.jacobian[1].x;
-                const double m22 = q.jacobian[0].y * q.jacobian[0].y + q.jacobian[1].y * q.jacobian[1].y;
-                const double m12 = q.jacobian[0].x * q.jacobian[0].y + q.jacobian[1].x * q.jacobian[1].y;
-                const double root = std::hypot(0.5 * (m11 - m22), m12), theta = 0.5 * std::atan2(2 * m12, m11 - m22);
-                const double sv1 = std::sqrt(0.5 * (m11 + m22) + root), sv2 = std::sqrt(std::max(0.0, 0.5 * (m11 + m22) - root));
-                const auto radius = [&](double sv) { return static_cast<real>((sv * cu * sh + cs * std::sqrt(sr * sr + sv * sv * sh * sh)) * (1 + 1e-4) + 1e-6); };
-                p.bound_[k] = vec4(static_cast<real>(std::cos(theta)), static_cast<real>(std::sin(theta)), radius(sv1), radius(sv2));
+                p.bound_[k] = element_sbox(q.jacobian, static_cast<double>(p.k_.sigma_h), static_cast<double>(g.sigma_r), static_cast<double>(g.cull_u),
+                                           static_cast<double>(g.cull_s));
                 const double z2 = std::max(1e-12, 1 - q.s.x * q.s.x - q.s.y * q.s.y);
                 slope2 += static_cast<real>((q.s.x * q.s.x + q.s.y * q.s.y) / z2);
             }
@@ -198,6 +189,19 @@ public:
         p.alpha_g_ = std::sqrt(std::max(real(1e-8), slope2 / static_cast<real>(n) + real(2) * g.sigma_r * g.sigma_r));
         if (g.hierarchy == pndf_hierarchy::build) p.build_grid();
         return p;
+    }
+
+    // The oriented s-box of an element with Jacobian J (header comment): the axes of J J^T (angle
+    // theta of its larger eigenvalue), the radius along each from its singular value; rounded up by
+    // 1e-4 relative plus 1e-6, so that the float kernel's own rounding stays inside. Returned as
+    // (cos theta, sin theta, r_1, r_2). Shared with lobe_tree.hpp.
+    static vec4 element_sbox(const glm::dmat2& jacobian, double sh, double sr, double cu, double cs) {
+        const glm::dvec2 j0 = jacobian[0], j1 = jacobian[1];
+        const double m11 = j0.x * j0.x + j1.x * j1.x, m22 = j0.y * j0.y + j1.y * j1.y, m12 = j0.x * j0.y + j1.x * j1.y;
+        const double root = std::hypot(0.5 * (m11 - m22), m12), theta = 0.5 * std::atan2(2 * m12, m11 - m22);
+        const double sv1 = std::sqrt(0.5 * (m11 + m22) + root), sv2 = std::sqrt(std::max(0.0, 0.5 * (m11 + m22) - root));
+        const auto radius = [&](double sv) { return static_cast<real>((sv * cu * sh + cs * std::sqrt(sr * sr + sv * sv * sh * sh)) * (1 + 1e-4) + 1e-6); };
+        return vec4(static_cast<real>(std::cos(theta)), static_cast<real>(std::sin(theta)), radius(sv1), radius(sv2));
     }
 
     // D_P(s) through the hierarchy whatever its cost (eval picks it where it pays); the same

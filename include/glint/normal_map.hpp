@@ -182,6 +182,15 @@ private:
 
     template <class real, int taps>
     normal_sample<real> interpolate(const glm::vec<2, real, glm::defaultp>& u) const {
+        return interpolate_with<real, taps>([this](long x, long y) -> const glm::vec3& { return texel(x, y); }, u);
+    }
+
+public:
+    // The interpolation above over any texel source fetch(x, y) -> const glm::vec3& (integer texel
+    // coordinates, the source does its own wrapping): the implicit quilted maps of lobe_tree.hpp
+    // use it so that their lobes are bit-equal to those of the map they stand for.
+    template <class real, int taps, class fetch_t>
+    static normal_sample<real> interpolate_with(const fetch_t& fetch, const glm::vec<2, real, glm::defaultp>& u) {
         using v3 = glm::vec<3, real, glm::defaultp>;
         const real px = u.x - real(0.5), py = u.y - real(0.5);
         const real fx = std::floor(px), fy = std::floor(py);
@@ -195,7 +204,7 @@ private:
         for (int j = 0; j < taps; ++j)
             for (int i = 0; i < taps; ++i) {
                 const long x = ix + first + i, y = iy + first + j;
-                const v3 n(texel(x, y));
+                const v3 n(fetch(x, y));
                 v += (wx[i] * wy[j]) * n, vx += (dwx[i] * wy[j]) * n, vy += (wx[i] * dwy[j]) * n;
             }
         const real len = std::max(std::sqrt(glm::dot(v, v)), real(1e-6));
@@ -209,6 +218,7 @@ private:
         return r;
     }
 
+private:
     int width_ = 0, height_ = 0;
     wrap_mode wrap_ = wrap_mode::periodic;
     std::vector<glm::vec3> normals_;

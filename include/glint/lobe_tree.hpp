@@ -443,7 +443,7 @@ public:
             throw error(what + "more than 2^28 seeds on H");
         const auto start = std::chrono::steady_clock::now();
         lobe_forest f;
-        f.map_ = &map;
+        f.map_ = map;
         f.lp_ = lp;
         const real h = real(1) / real(lp.elements_per_texel);
         f.k_.sigma_h = h / std::sqrt(real(8) * std::log(real(2)));
@@ -603,12 +603,12 @@ public:
         };
         return sample_lobes_.size() * sizeof(entry) + boundary_lobes_.size() * sizeof(entry) + boundary_index_.size() * sizeof(std::uint32_t) +
                boundary_bits_.size() * sizeof(std::uint64_t) + set_bytes(sample_set_) + set_bytes(boundary_set_) + klobes_.size() * sizeof(klobe) +
-               map_->table_bytes() + map_->sample().normals().size() * sizeof(glm::vec3);
+               map_.table_bytes() + map_.sample().normals().size() * sizeof(glm::vec3);
     }
     const build_report& report() const noexcept { return report_; }
     real alpha_g() const noexcept { return alpha_g_; }
     real tau() const noexcept { return tau_; }
-    const quilted_map& map() const noexcept { return *map_; }
+    const quilted_map& map() const noexcept { return map_; }
     const lobe_params<real>& lobe_settings() const noexcept { return lp_; }
 
     // The K-lobes, as the tests read them: weight N a, member count, position mean and covariance,
@@ -654,8 +654,8 @@ public:
             return boundary_lobes_[static_cast<std::size_t>(it - boundary_index_.begin())];
         }
         glm::ivec2 local;
-        const int b = map_->owner(i / ept_, j / ept_, &local);
-        const glm::ivec2 src = map_->source(b);
+        const int b = map_.owner(i / ept_, j / ept_, &local);
+        const glm::ivec2 src = map_.source(b);
         const long si = (src.x + local.x) * ept_ + i % ept_, sj = (src.y + local.y) * ept_ + j % ept_;
         return sample_lobes_[static_cast<std::size_t>(si + sample_w_ * sj)];
     }
@@ -719,7 +719,7 @@ private:
     frame prepare(const texel_footprint<real>& fp, lobe_query_stats& st, real cull_u, real cull_s) const noexcept {
         auto c = fp.covariance;
         // Footprints whose culling box reaches more than 24 blocks from its centre are shrunk to that.
-        const real limit = real(24 * map_->stride()) / cull_u;
+        const real limit = real(24 * map_.stride()) / cull_u;
         const real m = std::max(c[0][0], c[1][1]);
         if (m > limit * limit && std::isfinite(m)) {
             c *= (limit * limit) / m;
@@ -764,7 +764,7 @@ private:
     }
 
     void fit_sample_lobes() {
-        const normal_map& s = map_->sample();
+        const normal_map& s = map_.sample();
         sample_w_ = s.width() * ept_;
         const long sh = static_cast<long>(s.height()) * ept_;
         sample_lobes_.resize(static_cast<std::size_t>(sample_w_ * sh));
@@ -784,7 +784,7 @@ private:
     // H are the same neighbours in I around the texel its owner block maps it to (then its lobe is
     // that sample seed's, bit for bit); else it is a boundary seed.
     void find_boundary() {
-        const quilted_map& m = *map_;
+        const quilted_map& m = map_;
         const long W = m.width(), H = m.height();
         const int o = m.overlap(), st = m.stride(), e = ept_;
         // Where each texel of H comes from in I, packed (y << 16 | x) so that a neighbour in I is
@@ -878,7 +878,7 @@ private:
     // without a core), in sparse tables of range-max lo and range-min hi over rows: a K-lobe node
     // whose box lies in these runs on every row it spans counts exactly the seeds B owns.
     void find_interiors() {
-        const quilted_map& m = *map_;
+        const quilted_map& m = map_;
         const int t = m.block(), o = m.overlap();
         int levels = 1;
         while ((1 << levels) < t) ++levels;
@@ -921,7 +921,7 @@ private:
 
     // Whether texels [x0, x1] x [y0, y1] of block b's square lie in its runs.
     bool in_runs(int b, int x0, int x1, int y0, int y1) const noexcept {
-        const int t = map_->block();
+        const int t = map_.block();
         if (x0 < 0 || y0 < 0 || x1 >= t || y1 >= t || x0 > x1 || y0 > y1) return false;
         const std::size_t base = static_cast<std::size_t>(b) * static_cast<std::size_t>(run_levels_) * static_cast<std::size_t>(t);
         const int n = y1 - y0 + 1;
@@ -1297,7 +1297,7 @@ private:
 
     // The sample set's part of D_P: per block (and periodic image) the footprint box moved into I.
     real sum_sample(const frame& f, const vec2& s, const lobe_query_options<real>& o, lobe_query_stats& st) const noexcept {
-        const quilted_map& m = *map_;
+        const quilted_map& m = map_;
         const real W = static_cast<real>(m.width()), H = static_cast<real>(m.height());
         const real x0 = f.mean.x - f.extent.x, x1 = f.mean.x + f.extent.x, y0 = f.mean.y - f.extent.y, y1 = f.mean.y + f.extent.y;
         // The blocks (and image offsets) whose squares overlap the box, per axis.
@@ -1380,7 +1380,7 @@ private:
     // The boundary set's part: walked in H over the box's periodic images.
     real sum_boundary(const frame& f, const vec2& s, lobe_query_stats& st) const noexcept {
         if (boundary_lobes_.empty()) return real(0);
-        const real W = static_cast<real>(map_->width()), H = static_cast<real>(map_->height());
+        const real W = static_cast<real>(map_.width()), H = static_cast<real>(map_.height());
         const real x0 = f.mean.x - f.extent.x, x1 = f.mean.x + f.extent.x, y0 = f.mean.y - f.extent.y, y1 = f.mean.y + f.extent.y;
         const long ix0 = static_cast<long>(std::floor(x0 / W)), ix1 = static_cast<long>(std::floor(x1 / W));
         const long iy0 = static_cast<long>(std::floor(y0 / H)), iy1 = static_cast<long>(std::floor(y1 / H));
@@ -1402,7 +1402,7 @@ private:
         return sum;
     }
 
-    const quilted_map* map_ = nullptr;
+    quilted_map map_;  // a copy: the sample and the block table
     lobe_params<real> lp_{};
     params k_{};
     real tau_ = 0, tan_cut_ = 0, kept_ = 1, alpha_g_ = real(0.1);

@@ -2,7 +2,7 @@
 // exact reference and its time per call, measured with Google Benchmark in the same run.
 // Prints markdown; with --docs DIR also writes the tables, CSVs and plots into DIR.
 //
-//   glint_report [--docs DIR] [--min-time SECONDS] [--only core|binomial|grid|ibl|microstructure|scratch|ndf_map|bin_map]
+//   glint_report [--docs DIR] [--min-time SECONDS] [--only core|binomial|grid|ibl|microstructure|scratch|ndf_map|bin_map|lobe_tree]
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -19,7 +19,7 @@ int main(int argc, char** argv) {
         else if (!std::strcmp(argv[i], "--min-time") && i + 1 < argc) min_time = std::atof(argv[++i]);
         else if (!std::strcmp(argv[i], "--only") && i + 1 < argc) only = argv[++i];
         else {
-            std::fprintf(stderr, "usage: %s [--docs DIR] [--min-time SECONDS] [--only core|binomial|grid|ibl|microstructure|scratch|ndf_map|bin_map]\n", argv[0]);
+            std::fprintf(stderr, "usage: %s [--docs DIR] [--min-time SECONDS] [--only core|binomial|grid|ibl|microstructure|scratch|ndf_map|bin_map|lobe_tree]\n", argv[0]);
             return 2;
         }
     }
@@ -34,6 +34,7 @@ int main(int argc, char** argv) {
     if (only.empty() || only == "scratch") sections.push_back(glint_report::scratch_section(min_time));
     if (only.empty() || only == "ndf_map") sections.push_back(glint_report::ndf_map_section(min_time));
     if (only.empty() || only == "bin_map") sections.push_back(glint_report::bin_map_section(min_time));
+    if (only.empty() || only == "lobe_tree") sections.push_back(glint_report::lobe_tree_section(min_time));
     std::string csv = glint_report::csv_header;
     for (const auto& s : sections) {
         std::fputs(s.markdown.c_str(), stdout);

@@ -78,6 +78,7 @@ section binomial_section(double min_time);
 section grid_section(double min_time);
 section ibl_section(double min_time);  // when built with GLINT_REPORT_IBL
 section microstructure_section(double min_time);
+section lobe_tree_section(double min_time);
 section scratch_section(double min_time);
 section ndf_map_section(double min_time);
 section bin_map_section(double min_time);

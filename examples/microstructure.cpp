@@ -10,6 +10,7 @@
 //                        [--example-size N [--ndf-map] [--placement tiled|stochastic] [--cell C]
 //                         [--rotation MIN,MAX] [--scale MIN,MAX] [--flip P]]
 //                        [--map-size N] [--bin-map [--bins N] [--kernel box|tent|beckmann]]
+//                        [--lobe-tree [--quilt-size N] [--delta-k D]]
 //
 // With --example-size the surface is covered by copies of an N x N example of the pattern
 // (XTXW24's tiny example): tiled, or one randomly rotated, scaled and mirrored copy per cell of C
@@ -21,6 +22,10 @@
 // inverse bin map (glint/bin_map.hpp, AKKW) instead of the P-NDF: each pixel's ray-differential
 // parallelogram, the microfacet NDF of n^2 half-vector bins (default n = ceil(3.6 / alpha) with the
 // flake roughness alpha = sqrt(2) sigma_r) and the beckmann kernel unless --kernel says otherwise.
+//
+// --lobe-tree quilts the map (the sample: give it a small --map-size, e.g. 128) into an implicit
+// N x N map (default 2048) and shades that with its lobe forest (glint/lobe_tree.hpp, ZXW), with
+// K-lobes at the cluster coefficient delta_k (default 0.4, ZXW's leather).
 //
 // The environment is lit as 64 directional lights drawn once from its luminance (the same for
 // every pixel, each weighted by radiance / pdf): an estimate of the environment integral that
@@ -36,6 +41,7 @@
 #include <vector>
 
 #include <glint/bin_map.hpp>
+#include <glint/lobe_tree.hpp>
 #include <glint/gaussian.hpp>
 #include <glint/ndf_map.hpp>
 #include <glint/io/exr.hpp>
@@ -58,7 +64,8 @@ namespace {
                  "                            [--close] [--size WxH] [--out PATH.exr]\n"
                  "                            [--example-size N [--ndf-map] [--placement tiled|stochastic] [--cell C]\n"
                  "                             [--rotation MIN,MAX] [--scale MIN,MAX] [--flip P]]\n"
-                 "                            [--map-size N] [--bin-map [--bins N] [--kernel box|tent|beckmann]]\n",
+                 "                            [--map-size N] [--bin-map [--bins N] [--kernel box|tent|beckmann]]\n"
+                 "                            [--lobe-tree [--quilt-size N] [--delta-k D]]\n",
                  problem.c_str());
     std::exit(2);
 }
@@ -113,7 +120,9 @@ void parse_range(const std::string& flag, const std::string& v, float lo, float 
 int main(int argc, char** argv) {
     std::string pattern = "brushed", map_path, light = "point", env_path = std::string(GLINT_DATA_DIR) + "/envmaps/studio.exr", out = "glint_microstructure.exr";
     float texels_per_unit = 600.0f, sigma_r = 0.01f;
-    bool close = false, use_map = false, use_bins = false;
+    bool close = false, use_map = false, use_bins = false, use_lobes = false;
+    int quilt_size = 2048;
+    float delta_k = 0.4f;
     int w = 640, h = 400, example_size = 0, map_size = 256, bins = 0;
     std::string kernel = "beckmann";
     std::string placement_kind = "tiled";
@@ -145,6 +154,9 @@ int main(int argc, char** argv) {
         else if (a == "--flip") flip = parse_float(a, value(), 0, 1, usage);
         else if (a == "--map-size") map_size = static_cast<int>(parse_float(a, value(), 4, 65536, usage));
         else if (a == "--bin-map") use_bins = true;
+        else if (a == "--lobe-tree") use_lobes = true;
+        else if (a == "--quilt-size") quilt_size = static_cast<int>(parse_float(a, value(), 16, 65536, usage));
+        else if (a == "--delta-k") delta_k = parse_float(a, value(), 0, 1e4f, usage);
         else if (a == "--bins") bins = static_cast<int>(parse_float(a, value(), 1, 4096, usage));
         else if (a == "--kernel") {
             kernel = value();
@@ -155,6 +167,7 @@ int main(int argc, char** argv) {
     }
     if (use_map && example_size == 0) usage("--ndf-map needs --example-size");
     if (use_bins && example_size > 0) usage("--bin-map shades a whole map: leave out --example-size");
+    if (use_lobes && (use_bins || example_size > 0)) usage("--lobe-tree quilts the map: leave out --bin-map and --example-size");
     if (example_size == 0 && (placement_kind != "tiled" || cell > 0)) usage("--placement and --cell need --example-size");
     glint::normal_map map;
     std::vector<directional> env_lights;
@@ -188,9 +201,26 @@ int main(int argc, char** argv) {
     glint::ndf_map<float> ndf;
     glint::ndf_placement<float> layout = glint::ndf_placement<float>::tiled();
     glint::bin_map<float> bin_map;
+    glint::lobe_forest<float> forest;
     float bin_alpha_g = 0;
     try {
-        if (use_bins) {
+        if (use_lobes) {
+            glint::quilt_params q;
+            q.width = q.height = quilt_size;
+            const auto quilted = glint::quilted_map::synthesize(map, q);
+            const double synth = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+            glint::lobe_params<float> l;
+            l.sigma_r = sigma_r;
+            glint::cluster_params<float> c;
+            c.delta_k = delta_k;
+            forest = glint::lobe_forest<float>::build(quilted, l, c);
+            std::fprintf(stderr,
+                         "glint_microstructure: %d x %d sample quilted into %d x %d (%d blocks) in %.2f s; lobe forest: %zu sample and %zu boundary lobes, "
+                         "%zu K-lobes (delta_k %g), %.1f MB, built in %.2f s\n",
+                         map.width(), map.height(), quilted.width(), quilted.height(), quilted.blocks_x() * quilted.blocks_y(), synth, forest.report().sample_lobes,
+                         forest.report().boundary_lobes, forest.report().klobes, static_cast<double>(delta_k), static_cast<double>(forest.bytes()) / 1e6,
+                         forest.report().seconds);
+        } else if (use_bins) {
             glint::bin_map_options o;
             o.alpha = std::sqrt(2.0) * static_cast<double>(sigma_r);
             o.bins_per_side = bins > 0 ? bins : static_cast<int>(std::ceil(3.6 / o.alpha));
@@ -223,8 +253,9 @@ int main(int argc, char** argv) {
         return 1;
     }
     const bool by_map = example_size > 0 && use_map, by_elements = example_size > 0 && stochastic && !use_map;
-    const float alpha_g = use_bins ? bin_alpha_g : by_map || by_elements ? ndf.alpha_g() : pndf.alpha_g();
+    const float alpha_g = use_lobes ? forest.alpha_g() : use_bins ? bin_alpha_g : by_map || by_elements ? ndf.alpha_g() : pndf.alpha_g();
     const auto pndf_at = [&](const glint::texel_footprint<float>& fp, const glm::vec2& s) {
+        if (use_lobes) return forest.eval(fp, s);
         if (by_map) return ndf.eval(layout, fp, s);
         if (by_elements) return ndf.eval_direct(layout, fp, s);
         return pndf.eval(fp, s);

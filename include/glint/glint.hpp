@@ -14,3 +14,4 @@
 #include "glint/scratch.hpp"
 #include "glint/ndf_map.hpp"
 #include "glint/bin_map.hpp"
+#include "glint/lobe_tree.hpp"

@@ -86,10 +86,12 @@
 // if none reach s it descends. Footprints whose culling box reaches more than 24 blocks from its
 // centre on an axis are shrunk to that (stats.clamped).
 //
-// Cost (docs/lobe_tree.md). The trees are walked once per block the footprint overlaps and per
-// grid level, and K-lobe nodes that straddle a block's edge cannot stand in: on this project's
-// maps eval is slower than gaussian_pndf's on the materialised map for small footprints, and
-// K-lobes pay only for footprints of many texels.
+// Paths (lobe_path). The trees are walked once per block the footprint overlaps and per grid
+// level, which small footprints cannot amortise; their seeds are few, so eval then sums the box's
+// lattice instead, seed by seed through the block table (as gaussian_pndf's direct loop), and
+// takes the trees once K-lobes can stand in (the footprint's smaller sd at least 8 texels over
+// cluster_extent). K-lobe nodes that straddle a block's edge cannot stand in: larger blocks leave
+// more of each block to K-lobes (docs/lobe_tree.md, by block size and footprint size).
 //
 // Sampling: a seed of H with probability w_i / W (w_i its tapered footprint weight, two passes
 // over the box's lattice), then s from that seed's lobe, so its density is exactly the K-lobe-free
@@ -128,7 +130,10 @@ namespace glint {
 
 struct quilt_params {
     int width = 1024, height = 1024;  // H, texels
-    int block = 64, overlap = 8;      // T and O (ZXW's code: 64 and 8); 1 <= O <= T / 4
+    // T and O, 1 <= O <= T / 4; 0: automatic, T half the sample's smaller side (at most 128) and
+    // O = T / 16 (at least 2). ZXW's code uses 64 and 8; blocks of 128 with overlap 8 leave 81% of
+    // each block's seeds to its core, where K-lobes can stand in, against 62% (docs/lobe_tree.md).
+    int block = 0, overlap = 0;
     double tolerance = 0.1;           // EF01's: pick among candidates within (1 + tolerance) of the least error
     int candidates = 1024;            // random source positions scored per block (0: every position)
     bool toroidal = true;             // H tiles without a seam
@@ -138,9 +143,14 @@ struct quilt_params {
 // H as its block table over the sample I.
 class quilted_map {
 public:
-    static quilted_map synthesize(const normal_map& sample, const quilt_params& q) {
+    static quilted_map synthesize(const normal_map& sample, const quilt_params& q_in) {
         const std::string what = "glint::quilted_map::synthesize: ";
         if (sample.width() <= 0 || sample.height() <= 0) throw error(what + "the sample normal map is empty");
+        if (q_in.block < 0 || q_in.overlap < 0)
+            throw error(what + "block = " + std::to_string(q_in.block) + ", overlap = " + std::to_string(q_in.overlap) + " (0: automatic, else positive)");
+        quilt_params q = q_in;
+        if (q.block == 0) q.block = std::min(128, std::min(sample.width(), sample.height()) / 2);
+        if (q.overlap == 0) q.overlap = std::max(2, q.block / 16);
         if (sample.width() >= 65535 || sample.height() >= 65535)
             throw error(what + "the sample (" + std::to_string(sample.width()) + " x " + std::to_string(sample.height()) + ") is 65535 or more texels on a side");
         if (q.block < 8) throw error(what + "block = " + std::to_string(q.block) + " is below 8 texels");
@@ -399,10 +409,17 @@ struct cluster_params {
     std::uint32_t seed = 1;
 };
 
+// How eval finds the seeds: the trees (with K-lobes), the lattice of the footprint's box (every
+// seed, as gaussian_pndf's direct loop), or whichever the footprint suits (automatic: the lattice
+// while the footprint is too small for K-lobes to stand in, sd * cluster_extent < 8 texels, and
+// its box holds fewer seeds than the trees would visit).
+enum class lobe_path { automatic, trees, lattice };
+
 template <class real>
 struct lobe_query_options {
     bool use_klobes = true;
     real cluster_extent = real(1);  // lambda: a node's K-lobes stand in only if its extent <= lambda min sd(footprint)
+    lobe_path path = lobe_path::automatic;
 };
 
 struct lobe_query_stats {
@@ -485,6 +502,7 @@ public:
         lobe_query_stats local;
         lobe_query_stats& st = stats ? *stats : local;
         const frame f = prepare(fp, st);
+        if (use_lattice(f, s, o)) return sum_lattice(f, s, st);
         return sum_sample(f, s, o, st) + sum_boundary(f, s, st);
     }
 
@@ -1019,6 +1037,10 @@ private:
         }
         // Position trees: a complete binary tree (heap order, root 1) over runs of 8 per cell.
         t.node_begin.assign(cells, 0);
+        std::size_t total = 0;  // sized once: growing the vector would touch its pages twice
+        for (std::size_t c = 0; c < cells; ++c)
+            if (t.cell_begin[c + 1] > t.cell_begin[c]) total += 2 * leaves_p2(t.cell_begin[c + 1] - t.cell_begin[c]);
+        t.nodes.reserve(total);
         const float big = std::numeric_limits<float>::max();
         const node empty{big, big, -big, -big, big, big, -big, -big, 0, 0};
         for (std::size_t c = 0; c < cells; ++c) {
@@ -1253,6 +1275,14 @@ private:
         return w * g;
     }
 
+    // Whether a seed at u lies outside the footprint's culling ellipse, where its term is 0: the
+    // kernel's own test (glint_pndf_element_lobe's Mahalanobis radius, the same arithmetic), made
+    // before the term's exponentials.
+    bool outside_footprint(const vec2& u, const frame& f) const noexcept {
+        const vec2 e = kernels::glint_pndf_offset(u, f);
+        return e.x * e.x / f.kappa.x + e.y * e.y / f.kappa.y > k_.cull_u * k_.cull_u;
+    }
+
     static bool outside_sbox(const vec4& b, const element& el, const vec2& s) {
         const real dx = s.x - el.us.z, dy = s.y - el.us.w;
         return std::fabs(dx * b.x + dy * b.y) > b.z || std::fabs(dy * b.x - dx * b.y) > b.w;
@@ -1339,6 +1369,7 @@ private:
                     if (outside_sbox(e.bound, e.el, s)) return;
                     const vec2 p(e.el.us.x, e.el.us.y);
                     const vec2 u = p - shift;
+                    if (outside_footprint(u, f)) return;
                     if (!(p.x >= cx0 && p.x < cx1 && p.y >= cy0 && p.y < cy1)) {
                         // Outside the core: B's own seed (its texel is B's), and not a boundary seed.
                         const real lx = p.x - real(src.x), ly = p.y - real(src.y);
@@ -1377,6 +1408,61 @@ private:
         return sum;
     }
 
+    // Whether eval takes the lattice path (lobe_path): K-lobes cannot stand in yet, and the box's
+    // seeds are fewer than the trees' visits, estimated as the lobes listed in the cells holding s
+    // at the box's share of the sample, plus a walk of 32 nodes per block and grid level.
+    bool use_lattice(const frame& f, const vec2& s, const lobe_query_options<real>& o) const noexcept {
+        if (o.path != lobe_path::automatic) return o.path == lobe_path::lattice;
+        if (o.use_klobes && tau_ > 0 && o.cluster_extent * std::sqrt(std::max(f.lambda.y, real(0))) >= real(8)) return false;
+        const double spacing = static_cast<double>(k_.spacing);
+        const double box = 4.0 * static_cast<double>(f.extent.x) * static_cast<double>(f.extent.y) / (spacing * spacing);
+        double listed = 0;
+        for (int l = 0; l < static_cast<int>(sample_set_.level_size.size()); ++l) {
+            const std::size_t c = cell_of(sample_set_, s, l);
+            listed += static_cast<double>(sample_set_.cell_begin[c + 1] - sample_set_.cell_begin[c]);
+        }
+        const double share = box / static_cast<double>(sample_lobes_.size());
+        const double blocks = (2.0 * static_cast<double>(f.extent.x) / map_.stride() + 1.0) * (2.0 * static_cast<double>(f.extent.y) / map_.stride() + 1.0);
+        return box < 1.5 * listed * share + 32.0 * blocks * static_cast<double>(sample_set_.level_size.size());
+    }
+
+    // D_P(s) by the footprint box's lattice: each row cut at the blocks' nominal columns; seeds of a
+    // block's core read the sample's lobes directly, the others through seed() (owner, boundary).
+    real sum_lattice(const frame& f, const vec2& s, lobe_query_stats& st) const noexcept {
+        const quilted_map& m = map_;
+        const auto rx = kernels::glint_pndf_axis_range(f.mean.x, f.extent.x, k_.spacing, k_.max_side);
+        const auto ry = kernels::glint_pndf_axis_range(f.mean.y, f.extent.y, k_.spacing, k_.max_side);
+        const long lw = k_.width, lh = k_.height, e = ept_, st_lat = static_cast<long>(m.stride()) * e, core0 = static_cast<long>(m.overlap() + 2) * e;
+        real sum = 0;
+        const auto add = [&](const entry& x, const vec2& u) GLINT_FLATTEN {
+            if (outside_sbox(x.bound, x.el, s) || outside_footprint(u, f)) return;
+            ++st.lobes;
+            sum += term(x.el, u, f, s, k_);
+        };
+        for (long j = ry.x; j <= ry.y; ++j) {
+            const long jj = wrap(j, lh), by = std::min<long>(jj / st_lat, m.blocks_y() - 1), ly = jj - by * st_lat;
+            const bool core_y = ly >= core0 && ly < static_cast<long>(m.stride_y(static_cast<int>(by))) * e - 2 * e;
+            const real uy = (real(j) + real(0.5)) * k_.spacing;
+            long i = rx.x;
+            while (i <= rx.y) {
+                const long ii = wrap(i, lw), bx = std::min<long>(ii / st_lat, m.blocks_x() - 1), lx0 = ii - bx * st_lat;
+                const long width = static_cast<long>(m.stride_x(static_cast<int>(bx))) * e;
+                const long run = std::min(rx.y - i + 1, width - lx0);  // seeds left in this block's columns
+                const int b = static_cast<int>(bx + m.blocks_x() * by);
+                const glm::ivec2 src = m.source(b);
+                const long row = (static_cast<long>(src.y) * e + ly) * sample_w_ + static_cast<long>(src.x) * e;
+                for (long k = 0; k < run; ++k) {
+                    const long lx = lx0 + k;
+                    const vec2 u((real(i + k) + real(0.5)) * k_.spacing, uy);
+                    if (core_y && lx >= core0 && lx < width - 2 * e) add(sample_lobes_[static_cast<std::size_t>(row + lx)], u);
+                    else add(seed(ii + k, jj), u);
+                }
+                i += run;
+            }
+        }
+        return sum;
+    }
+
     // The boundary set's part: walked in H over the box's periodic images.
     real sum_boundary(const frame& f, const vec2& s, lobe_query_stats& st) const noexcept {
         if (boundary_lobes_.empty()) return real(0);
@@ -1392,6 +1478,7 @@ private:
                 const glm::vec2 b1(static_cast<float>(x1 - offset.x), static_cast<float>(y1 - offset.y));
                 const auto leaf = [&](const entry& e) GLINT_FLATTEN {
                     if (outside_sbox(e.bound, e.el, s)) return;
+                    if (outside_footprint(vec2(e.el.us.x, e.el.us.y) + offset, f)) return;
                     ++st.lobes;
                     sum += term(e.el, vec2(e.el.us.x, e.el.us.y) + offset, f, s, k_);
                 };

@@ -32,9 +32,11 @@ glint::normal_map sample(glint::pattern kind, int size) {
     return glint::make_normal_map(p);
 }
 
-glint::quilted_map quilt(const glint::normal_map& s, int out) {
+// Automatic blocks (128, overlap 8 from a 256^2 sample) unless block > 0; tolerance 0.1, 1024
+// candidates: the defaults.
+glint::quilted_map quilt(const glint::normal_map& s, int out, int block = 0, int overlap = 0) {
     glint::quilt_params q;
-    q.width = q.height = out;  // block 64, overlap 8, tolerance 0.1, 1024 candidates: the defaults
+    q.width = q.height = out, q.block = block, q.overlap = overlap;
     return glint::quilted_map::synthesize(s, q);
 }
 
@@ -51,12 +53,12 @@ struct query {
     glm::vec2 s;
 };
 
-// 200 footprints (sd log-uniform in [1, 64] texels, aspect 0.5 to 1, any rotation, anywhere on H),
-// each with one s drawn from the exact P-NDF, where it lives.
-std::vector<query> queries(const glint::gaussian_pndf<float>& d, int side) {
+// 200 footprints (sd log-uniform in [lo, hi] texels, aspect 0.5 to 1, any rotation, anywhere on
+// H), each with one s drawn from the exact P-NDF, where it lives.
+std::vector<query> queries(const glint::gaussian_pndf<float>& d, int side, double lo = 1, double hi = 64, std::size_t count = 200) {
     std::vector<query> q;
-    for (std::uint32_t i = 0; q.size() < 200 && i < 10000; ++i) {
-        const double sd = std::pow(64.0, unit(i, 1)), t = 3.14159 * unit(i, 2);
+    for (std::uint32_t i = 0; q.size() < count && i < 10000; ++i) {
+        const double sd = lo * std::pow(hi / lo, unit(i, 1)), t = 3.14159 * unit(i, 2);
         const glm::dmat2 R(std::cos(t), std::sin(t), -std::sin(t), std::cos(t));
         glint::texel_footprint<float> fp;
         fp.center = glm::vec2(static_cast<float>(side * unit(i, 3)), static_cast<float>(side * unit(i, 4)));
@@ -149,7 +151,7 @@ section lobe_tree_section(double min_time) {
     const double direct_s = seconds_since(t0);
     md << "### Preprocessing and memory (scratched metal, sigma_r 0.005)\n\n"
        << "| | time | memory |\n|---|---|---|\n"
-       << "| synthesis (quilting, 64^2 blocks, overlap 8, " << h.blocks_x() * h.blocks_y() << " blocks) | " << fmt(synth_s * 1e3, "%.0f") << " ms | "
+       << "| synthesis (quilting, " << h.block() << "^2 blocks, overlap " << h.overlap() << ", " << h.blocks_x() * h.blocks_y() << " blocks) | " << fmt(synth_s * 1e3, "%.0f") << " ms | "
        << fmt(static_cast<double>(h.table_bytes()) / 1024, "%.1f") << " KiB block table |\n"
        << "| lobe forest, delta_k = 0.3 (" << f03.report().sample_lobes << " sample lobes, " << f03.report().boundary_lobes << " boundary lobes, "
        << f03.report().klobes << " K-lobes) | " << fmt(forest_s * 1e3, "%.0f") << " ms | " << fmt(static_cast<double>(f03.bytes()) / 1048576, "%.1f") << " MiB |\n"
@@ -190,6 +192,38 @@ section lobe_tree_section(double min_time) {
     }
     md << "\n![L1 error against time per evaluation, by delta_k](lobe_tree_delta_k.svg)\n\n";
     out.files["lobe_tree_delta_k.svg"] = svg_plot(dks, errs, nss, base_ns);
+
+    // By footprint size: where the forest wins and where it loses.
+    md << "### By footprint size (delta_k 0.3; 40 footprints per row, sd within 10% of the row's)\n\n"
+       << "| sd, texels | direct P-NDF, ns | lobe forest, ns | speed vs direct | forest's path |\n|---|---|---|---|---|\n";
+    for (const double sd : {1.0, 2.0, 4.0, 8.0, 16.0, 32.0, 64.0}) {
+        const auto qs = queries(direct, side, sd * 0.95, sd * 1.05, 40);
+        const double b = time_evals("lobe_tree/direct_sd" + fmt(sd, "%g"), [&](const query& x) { return direct.eval(x.fp, x.s); }, qs, min_time);
+        const double t = time_evals("lobe_tree/forest_sd" + fmt(sd, "%g"), [&](const query& x) { return f03.eval(x.fp, x.s); }, qs, min_time);
+        glint::lobe_query_stats st;
+        for (const auto& x : qs) f03.eval(x.fp, x.s, {}, &st);
+        md << "| " << fmt(sd, "%g") << " | " << fmt(b, "%.0f") << " | " << fmt(t, "%.0f") << " | " << fmt(b / t, "%.2f") << "x | "
+           << (st.nodes > 0 ? "trees" : "lattice") << " |\n";
+    }
+    md << "\n";
+
+    // ZXW's blocks (64, overlap 8) against the automatic ones, at delta_k 0.3.
+    {
+        const auto h64 = quilt(s_metal, side, 64, 8);
+        t0 = std::chrono::steady_clock::now();
+        const auto f64 = build(h64, glint::lobe_kind::gaussian, 0.005f, 0.3f);
+        const double build64 = seconds_since(t0);
+        const auto d64 = glint::gaussian_pndf<float>::build(h64.materialize(), g);
+        const auto q64 = queries(d64, side);
+        const double b64 = time_evals("lobe_tree/direct64", [&](const query& x) { return d64.eval(x.fp, x.s); }, q64, min_time);
+        const double t64 = time_evals("lobe_tree/forest64", [&](const query& x) { return f64.eval(x.fp, x.s); }, q64, min_time);
+        md << "### Block size (delta_k 0.3, the 200 footprints' rule)\n\n"
+           << "| blocks | boundary lobes | forest build | forest memory | speed vs direct |\n|---|---|---|---|---|\n"
+           << "| 64, overlap 8 (ZXW's code) | " << f64.report().boundary_lobes << " | " << fmt(build64 * 1e3, "%.0f") << " ms | "
+           << fmt(static_cast<double>(f64.bytes()) / 1048576, "%.1f") << " MiB | " << fmt(b64 / t64, "%.2f") << "x |\n"
+           << "| " << h.block() << ", overlap " << h.overlap() << " (automatic) | " << f03.report().boundary_lobes << " | " << fmt(forest_s * 1e3, "%.0f")
+           << " ms | " << fmt(static_cast<double>(f03.bytes()) / 1048576, "%.1f") << " MiB | " << fmt(base_ns / nss[2], "%.2f") << "x |\n\n";
+    }
 
     // Structured: pyramids, product lobes (ZXW Fig. 7, delta_k 30).
     const auto s_pyr = sample(glint::pattern::pyramids, small);

@@ -75,6 +75,7 @@
 #include <vector>
 
 #include "glint/core/error.hpp"
+#include "glint/core/hash.hpp"
 #include "glint/microfacet.hpp"
 #include "glint/normal_map.hpp"
 
@@ -264,15 +265,7 @@ public:
                 found = acc > target;
             }
         });
-        const auto l = kernels::glint_pndf_element_lobe(chosen, chosen_u, f, k);
-        // C = sigma_r^2 I + B B^T, its Cholesky factor L, and a radius truncated at cull_s.
-        const real sr = std::max(k_.sigma_r, real(1e-5));
-        const real c11 = sr * sr + l.b.x * l.b.x + l.b.z * l.b.z, c12 = l.b.x * l.b.y + l.b.z * l.b.w;
-        const real l11 = std::sqrt(c11), l21 = c12 / l11, l22 = std::sqrt(std::max(l.det_c / c11, real(0)));
-        const real rho2 = real(-2) * std::log1p(-u1 * -std::expm1(real(-0.5) * k_.cull_s * k_.cull_s));
-        const real rho = std::sqrt(std::max(rho2, real(0))), phi = real(6.28318530717958647692) * u2;
-        const real z1 = rho * std::cos(phi), z2 = rho * std::sin(phi);
-        r.s = l.mean + vec2(l11 * z1, l21 * z1 + l22 * z2);
+        r.s = draw_from_lobe(kernels::glint_pndf_element_lobe(chosen, chosen_u, f, k), k_.sigma_r, k_.cull_s, u1, u2);
         if (!(r.s.x * r.s.x + r.s.y * r.s.y < real(1))) return pndf_sample<real>{};
         r.pdf_s = pdf(fp, r.s, total);
         if (!(r.pdf_s > 0)) return pndf_sample<real>{};
@@ -280,6 +273,19 @@ public:
         r.pdf_h = r.pdf_s * r.h.z;
         r.valid = true;
         return r;
+    }
+
+    // s from an element's footprint lobe N(mean, C) truncated at Mahalanobis radius cull_s (the
+    // lobe term's own cut): C = sigma_r^2 I + B B^T, its Cholesky factor, a radius from the
+    // truncated Rayleigh law (u1) and an angle (u2). Shared with lobe_tree.hpp.
+    static vec2 draw_from_lobe(const typename kernels::glint_pndf_lobe& l, real sigma_r, real cull_s, real u1, real u2) {
+        const real sr = std::max(sigma_r, real(1e-5));
+        const real c11 = sr * sr + l.b.x * l.b.x + l.b.z * l.b.z, c12 = l.b.x * l.b.y + l.b.z * l.b.w;
+        const real l11 = std::sqrt(c11), l21 = c12 / l11, l22 = std::sqrt(std::max(l.det_c / c11, real(0)));
+        const real rho2 = real(-2) * std::log1p(-u1 * -std::expm1(real(-0.5) * cull_s * cull_s));
+        const real rho = std::sqrt(std::max(rho2, real(0))), phi = real(6.28318530717958647692) * u2;
+        const real z1 = rho * std::cos(phi), z2 = rho * std::sin(phi);
+        return l.mean + vec2(l11 * z1, l21 * z1 + l22 * z2);
     }
 
     // The density of sample()'s s: D_P(s) over the sampled elements (the hierarchy's sum or the
@@ -520,18 +526,6 @@ private:
         return sum;
     }
 
-    static std::uint32_t morton(std::uint32_t x, std::uint32_t y) {
-        const auto spread = [](std::uint32_t v) {
-            v &= 0xffffu;
-            v = (v | (v << 8)) & 0x00ff00ffu;
-            v = (v | (v << 4)) & 0x0f0f0f0fu;
-            v = (v | (v << 2)) & 0x33333333u;
-            v = (v | (v << 1)) & 0x55555555u;
-            return v;
-        };
-        return spread(x) | (spread(y) << 1);
-    }
-
     // Calls fn(cell index) for each cell of grid level l that element e's oriented s-box overlaps
     // (separating axes: the cell's, then the box's), widened by 1e-6 so that a query's cell_of,
     // rounded in float, never finds s in a cell that does not list the element.
@@ -597,7 +591,7 @@ private:
         std::iota(order.begin(), order.end(), 0u);
         std::vector<std::uint32_t> key(n);
         for (std::size_t e = 0; e < n; ++e)
-            key[e] = morton(static_cast<std::uint32_t>(e % static_cast<std::size_t>(k_.width)), static_cast<std::uint32_t>(e / static_cast<std::size_t>(k_.width)));
+            key[e] = morton2(static_cast<std::uint32_t>(e % static_cast<std::size_t>(k_.width)), static_cast<std::uint32_t>(e / static_cast<std::size_t>(k_.width)));
         std::sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) { return key[a] < key[b] || (key[a] == key[b] && a < b); });
         for (const std::uint32_t e : order)
             for_each_cell(e, level_[e], [&](std::size_t c) { listed_[fill[c]++] = listed_element{element{data_[2 * e], data_[2 * e + 1]}, bound_[e]}; });

@@ -555,14 +555,7 @@ public:
         });
         const element el = seed(ci, cj).el;
         if (lp_.kind == lobe_kind::gaussian) {
-            const auto l = kernels::glint_pndf_element_lobe(el, cu, f, k_);
-            const real sr = std::max(k_.sigma_r, real(1e-5));
-            const real c11 = sr * sr + l.b.x * l.b.x + l.b.z * l.b.z, c12 = l.b.x * l.b.y + l.b.z * l.b.w;
-            const real l11 = std::sqrt(c11), l21 = c12 / l11, l22 = std::sqrt(std::max(l.det_c / c11, real(0)));
-            const real rho2 = real(-2) * std::log1p(-u1 * -std::expm1(real(-0.5) * k_.cull_s * k_.cull_s));
-            const real rho = std::sqrt(std::max(rho2, real(0))), phi = real(6.28318530717958647692) * u2;
-            const real z1 = rho * std::cos(phi), z2 = rho * std::sin(phi);
-            r.s = l.mean + vec2(l11 * z1, l21 * z1 + l22 * z2);
+            r.s = gaussian_pndf<real>::draw_from_lobe(kernels::glint_pndf_element_lobe(el, cu, f, k_), k_.sigma_r, k_.cull_s, u1, u2);
         } else {
             // theta' from the truncated slope distribution about m_i (Beckmann: tan^2 = -a^2 ln(1 - u (1 - eps));
             // GGX: tan^2 = a^2 v / (1 - v), v = u kept), phi uniform; then rotate into the frame of m_i.
@@ -949,18 +942,6 @@ private:
         return std::max(run_lo_[r0], run_lo_[r1]) <= x0 && std::min(run_hi_[r0], run_hi_[r1]) > x1;
     }
 
-    static std::uint32_t morton(std::uint32_t x, std::uint32_t y) {
-        const auto spread = [](std::uint32_t v) {
-            v &= 0xffffu;
-            v = (v | (v << 8)) & 0x00ff00ffu;
-            v = (v | (v << 4)) & 0x0f0f0f0fu;
-            v = (v | (v << 2)) & 0x33333333u;
-            v = (v | (v << 1)) & 0x55555555u;
-            return v;
-        };
-        return spread(x) | (spread(y) << 1);
-    }
-
     // Calls fn(cell) for each cell of level l (of t) that the oriented s-box b about n overlaps
     // (gaussian.hpp's for_each_cell).
     template <class fn_t>
@@ -1028,7 +1009,7 @@ private:
         for (std::size_t e = 0; e < n; ++e) {
             const auto x = static_cast<std::uint32_t>(std::floor(static_cast<double>(lobes[e].el.us.x) * inv));
             const auto y = static_cast<std::uint32_t>(std::floor(static_cast<double>(lobes[e].el.us.y) * inv));
-            key[e] = (static_cast<std::uint64_t>(morton(x, y)) << 32) | e;
+            key[e] = (static_cast<std::uint64_t>(morton2(x, y)) << 32) | e;
         }
         std::sort(key.begin(), key.end());
         for (const std::uint64_t k : key) {

@@ -1,9 +1,7 @@
 // Inverse bin maps (glint/bin_map.hpp, AKKW): the bins, the tree's counts and areas against brute
 // force over every texel, normalisation of every kernel, the global histogram, periodicity, hard
 // footprints, bad input, and no allocation per query.
-// This file replaces the global operator new and delete by malloc and free (to count
-// allocations); GCC then sees free() on what it thinks came from new.
-#pragma GCC diagnostic ignored "-Wmismatched-new-delete"
+// This file's binary counts allocations (tests/support/count_allocations.hpp).
 
 #include <doctest/doctest.h>
 
@@ -17,21 +15,11 @@
 #include <glint/patterns.hpp>
 
 #include "../support/bin_map_support.hpp"
+#include "../support/count_allocations.hpp"
 #include "../support/errors.hpp"
 
-// Counts the allocations of this test binary while `counting` is set (operator new is replaced
-// for the whole binary; it only adds a counter).
-namespace {
-std::atomic<bool> counting{false};
-std::atomic<long> allocations{0};
-}  // namespace
-void* operator new(std::size_t n) {
-    if (counting) ++allocations;
-    if (void* p = std::malloc(n ? n : 1)) return p;
-    throw std::bad_alloc();
-}
-void operator delete(void* p) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t) noexcept { std::free(p); }
+using glint_test::allocations;
+using glint_test::counting;
 
 namespace {
 

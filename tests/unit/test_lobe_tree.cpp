@@ -4,9 +4,7 @@
 // normalisation, K-lobes' moments, the delta_k trend, the synthesis statistics against the
 // sample, errors, and zero allocations per query.
 //
-// This binary replaces the global operator new and delete by malloc and free to count
-// allocations; GCC then sees free() on what it thinks came from new.
-#pragma GCC diagnostic ignored "-Wmismatched-new-delete"
+// This file's binary counts allocations (tests/support/count_allocations.hpp).
 
 #include <doctest/doctest.h>
 
@@ -20,20 +18,12 @@
 #include <glint/lobe_tree.hpp>
 #include <glint/patterns.hpp>
 
+#include "../support/count_allocations.hpp"
 #include "../support/errors.hpp"
 #include "../support/pndf_support.hpp"
 
-namespace {
-std::atomic<bool> counting{false};
-std::atomic<long> allocations{0};
-}  // namespace
-void* operator new(std::size_t n) {
-    if (counting) ++allocations;
-    if (void* p = std::malloc(n ? n : 1)) return p;
-    throw std::bad_alloc();
-}
-void operator delete(void* p) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t) noexcept { std::free(p); }
+using glint_test::allocations;
+using glint_test::counting;
 
 namespace {
 

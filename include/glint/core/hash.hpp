@@ -1,4 +1,5 @@
-// Counter-based hashing and uniform variates (kernels/core.glsl), bit-exact with the GLSL path.
+// Counter-based hashing and uniform variates (kernels/core.glsl), bit-exact with the GLSL path;
+// and Morton codes.
 #pragma once
 
 #include <cstdint>
@@ -20,6 +21,20 @@ real unit_from_bits(std::uint32_t h) {
 template <class real = float>
 real open_unit_from_bits(std::uint32_t h) {
     return detail::glsl::kernels<real>::glint_open_unit_from_bits(h);
+}
+
+// The Morton (Z-order) code of (x, y), the low 16 bits of each interleaved, x in the even bits:
+// the order of the P-NDF hierarchies' position trees (gaussian.hpp, lobe_tree.hpp).
+inline std::uint32_t morton2(std::uint32_t x, std::uint32_t y) {
+    const auto spread = [](std::uint32_t v) {
+        v &= 0xffffu;
+        v = (v | (v << 8)) & 0x00ff00ffu;
+        v = (v | (v << 4)) & 0x0f0f0f0fu;
+        v = (v | (v << 2)) & 0x33333333u;
+        v = (v | (v << 1)) & 0x55555555u;
+        return v;
+    };
+    return spread(x) | (spread(y) << 1);
 }
 
 }  // namespace glint

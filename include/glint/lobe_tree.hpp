@@ -11,8 +11,8 @@
 //   auto forest = glint::lobe_forest<float>::build(h, l, c);              // host, may throw
 //   float d = forest.eval(fp, glm::vec2(hx, hy));                         // per pixel: D_P(s) over the disk
 //
-// Synthesis (Sec. 4.1; image quilting, Efros and Freeman 2001). Blocks of T x T texels at a
-// stride S = T - O over H (the last column and row of blocks narrower when S does not divide H's
+// Synthesis (Sec. 4.1; image quilting, Efros and Freeman 2001). Blocks of T x T texels (by default
+// half the sample's side, at most 128, with O = T / 16) at a stride S = T - O over H (the last column and row of blocks narrower when S does not divide H's
 // size), each a copy of the sample from its source corner, chosen in raster order among
 // `candidates` random source positions by the sum of squared differences of (n_x, n_y) over its
 // overlaps with the blocks already placed (left, top; with `toroidal`, the first column's and
@@ -26,11 +26,12 @@
 //
 // Lobes. Seeds on H's lattice of spacing h = 1 / elements_per_texel, as gaussian.hpp's
 // (normal_map.hpp's periodic bicubic, the same arithmetic): a seed whose interpolation stencil
-// (the texels with a non-zero weight or derivative weight) lies inside one block B is the sample's
-// seed at the same offset in B's source, bit for bit, so it is stored once for I; a seed whose
-// stencil spans blocks is a boundary lobe, fitted on H and stored in H coordinates (ZXW's separate
-// boundary lobes; the band is exactly the stencil's reach: 1 texel each side of an ownership change
-// at h = 1, 2 at finer steps). Kinds:
+// (the texels with a non-zero weight or derivative weight) reads in H the same neighbours as in I
+// around the texel its owner block B maps it to is the sample's seed at that offset in B's source,
+// bit for bit, so it is stored once for I; any other seed (its stencil crosses a cut) is a
+// boundary lobe, fitted on H and stored in H coordinates (ZXW's separate boundary lobes; the band
+// is exactly the stencil's reach: 1 texel each side of an ownership change at h = 1, 2 at finer
+// steps). Kinds:
 // - gaussian (glints, YHMR16 Sec. 4): a_i N2(u; u_i, sigma_h^2 I) N2(s; n_i + J_i (u - u_i), sigma_r^2 I),
 //   the element of gaussian.hpp, whose footprint integral (Eq. 11's terms) is kernels/gaussian.glsl's
 //   closed form;
@@ -119,7 +120,7 @@
 #include "glint/normal_map.hpp"
 
 // The per-lobe loops inline the kernels' whole call chain (GCC and Clang): the frame passed by
-// value to an out-of-line kernel costs a 100-byte copy per lobe, half the term's time.
+// value to an out-of-line kernel cost a 100-byte copy per lobe (17% of eval's time in a profile).
 #if defined(__GNUC__)
 #define GLINT_FLATTEN __attribute__((flatten))
 #else
@@ -487,6 +488,7 @@ public:
         f.build_set(f.sample_set_, f.sample_lobes_);
         f.build_set(f.boundary_set_, f.boundary_lobes_);
         if (f.tau_ > 0) f.cluster(cp);
+        f.scratch_centres_ = {}, f.scratch_assign_ = {};  // k-means' work space, build only
         f.report_.sample_lobes = f.sample_lobes_.size();
         f.report_.boundary_lobes = f.boundary_lobes_.size();
         f.report_.listed = f.sample_set_.listed.size() + f.boundary_set_.listed.size();

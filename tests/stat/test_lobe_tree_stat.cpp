@@ -94,13 +94,13 @@ TEST_CASE("lobe-tree sampler: chi-square against its exact pdf, Gaussian and pro
         const double W = f.sampling_weight(fp);
         const auto disk = gt::directional_chi_square(
             gt::domain::disk, 16, 16, [&](const glm::dvec3& v) { return f.pdf(fp, glm::dvec2(v.x, v.y), W); }, d.disk, d.failures, 5.0, 3);
-        MESSAGE(st.what << ": disk p = " << disk.chi2.p_value << " (" << disk.chi2.cells << " cells), failed draws " << d.failures);
+        MESSAGE(std::string(st.what) << ": disk p = " << disk.chi2.p_value << " (" << disk.chi2.cells << " cells), failed draws " << d.failures);
         CHECK_FALSE(disk.rejects(alpha));
         ++tests;
         if (tests == 1) {
             const auto hemi = gt::directional_chi_square(
                 gt::domain::hemisphere, 16, 16, [&](const glm::dvec3& v) { return f.pdf(fp, glm::dvec2(v.x, v.y), W) * v.z; }, d.hemisphere, d.failures, 5.0, 3);
-            MESSAGE(st.what << ": hemisphere p = " << hemi.chi2.p_value);
+            MESSAGE(std::string(st.what) << ": hemisphere p = " << hemi.chi2.p_value);
             CHECK_FALSE(hemi.rejects(alpha));
         }
     }

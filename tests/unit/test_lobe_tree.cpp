@@ -155,7 +155,7 @@ TEST_CASE("lobe_tree: with delta_k = 0 the P-NDF is the materialised map's, over
             worst = std::max(worst, std::max(std::fabs(a - b), std::fabs(c - b)) / b);
             worst_ref = std::max(worst_ref, std::fabs(f.eval_reference(fp, x.s) - d.eval_reference(fp, x.s)) / d.eval_reference(fp, x.s));
         }
-        MESSAGE(p.what << ": worst relative difference of either path " << worst << " (brute force " << worst_ref << "), " << blocks << " blocks");
+        MESSAGE(std::string(p.what) << ": worst relative difference of either path " << worst << " (brute force " << worst_ref << "), " << blocks << " blocks");
         CHECK(nonzero > 20);
         CHECK(blocks >= p.blocks);
         CHECK(worst < 1e-10);
@@ -249,7 +249,7 @@ TEST_CASE("lobe_tree: Beckmann and GGX lobes integrate to one less their mass be
                 literal += v * std::cos(th);
             }
         }
-        MESSAGE((c.kind == glint::lobe_kind::beckmann ? "beckmann" : "ggx") << " a = " << c.a << " about (" << n.x << ", " << n.y << "): disk integral " << disk
+        MESSAGE(std::string(c.kind == glint::lobe_kind::beckmann ? "beckmann" : "ggx") << " a = " << c.a << " about (" << n.x << ", " << n.y << "): disk integral " << disk
                                                                     << ", expected " << expected << ", without the Jacobian " << literal);
         CHECK(disk == doctest::Approx(expected).epsilon(2e-3));
         CHECK(std::fabs(literal - expected) > 0.01);
@@ -400,7 +400,7 @@ TEST_CASE("lobe_tree: quilted maps keep the sample's statistics without its peri
                 inside += glm::dot(e, e), insides += 1;
             }
         seam /= seams, inside /= insides, jump_random /= randoms;
-        MESSAGE(glint::pattern_name(kind) << ": histogram L1 " << l1 << " (random placement " << l1_random << "), worst correlation difference (lags 0-16) " << worst_rho
+        MESSAGE(std::string(glint::pattern_name(kind)) << ": histogram L1 " << l1 << " (random placement " << l1_random << "), worst correlation difference (lags 0-16) " << worst_rho
                                           << ", correlation at the sample period " << rho_quilt << " (tiled " << rho_tiled << "), seam jump " << seam
                                           << " (sample neighbours " << inside << ", random placement " << jump_random << ")");
         if (kind == glint::pattern::scratched_metal) CHECK(l1 < 0.05);

@@ -258,12 +258,13 @@ public:
     // The block table: source corners and cuts (the sample is the caller's and counted apart).
     std::size_t table_bytes() const noexcept { return src_.size() * sizeof(glm::ivec2) + cut_left_.size() + cut_top_.size(); }
 
-private:
-    static long wrap(long i, long n) {
+    // i wrapped into [0, n) (periodic maps; also lobe_forest's).
+    static long wrap(long i, long n) noexcept {
         const long r = i % n;
         return r < 0 ? r + n : r;
     }
 
+private:
     // One overlap to score: the new block's local rectangle [x0, x1) x [y0, y1) against block
     // `other` at local offset d (other's local = mine + d).
     struct overlap_rect {
@@ -688,10 +689,7 @@ private:
         std::vector<node> nodes;
     };
 
-    static long wrap(long i, long n) {
-        const long r = i % n;
-        return r < 0 ? r + n : r;
-    }
+    static long wrap(long i, long n) { return quilted_map::wrap(i, n); }
     static std::uint32_t leaves_p2(std::uint32_t count) {
         const std::uint32_t leaves = (count + 7) / 8;
         std::uint32_t p2 = 1;

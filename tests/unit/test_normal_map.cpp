@@ -101,6 +101,39 @@ TEST_CASE("normal_map: interpolation hits the texels, is periodic, and its Jacob
     CHECK(glm::length(c.texel(-5, 0) - n[0]) == 0);
 }
 
+TEST_CASE("normal_map: at texel centres the bicubic reads 5 taps and equals the 16-tap sum bit for bit") {
+    // The 5-tap path (interpolate_with) must give what the full Catmull-Rom loop gives: the loop at
+    // t = 0 adds only zeros besides the cross's terms. The reference here is that loop, written out.
+    glint::pattern_params p;
+    p.kind = glint::pattern::noise;
+    p.width = p.height = 16;
+    p.slope_rms = 0.4;
+    const glint::normal_map m = glint::make_normal_map(p);
+    const double t = 0, t2 = t * t, t3 = t2 * t;  // Catmull-Rom's weights at t = 0, as normal_map computes them
+    const double w[4] = {0.5 * (-t3 + 2 * t2 - t), 0.5 * (3 * t3 - 5 * t2 + 2), 0.5 * (-3 * t3 + 4 * t2 + t), 0.5 * (t3 - t2)};
+    const double dw[4] = {0.5 * (-3 * t2 + 4 * t - 1), 0.5 * (9 * t2 - 10 * t), 0.5 * (-9 * t2 + 8 * t + 1), 0.5 * (3 * t2 - 2 * t)};
+    int mismatches = 0, checked = 0;
+    for (int y = -1; y < 17; y += 3)
+        for (int x = -2; x < 18; x += 5) {
+            int fetched = 0;
+            const auto fetch = [&](long i, long j) -> const glm::vec3& { return ++fetched, m.texel(i, j); };
+            const auto q = glint::normal_map::interpolate_with<double, 4>(fetch, glm::dvec2(x + 0.5, y + 0.5));
+            CHECK(fetched == 5);
+            glm::dvec3 v(0), vx(0), vy(0);
+            for (int j = 0; j < 4; ++j)
+                for (int i = 0; i < 4; ++i) {
+                    const glm::dvec3 n(m.texel(x - 1 + i, y - 1 + j));
+                    v += (w[i] * w[j]) * n, vx += (dw[i] * w[j]) * n, vy += (w[i] * dw[j]) * n;
+                }
+            const double len = std::max(std::sqrt(glm::dot(v, v)), 1e-6);
+            const glm::dvec3 n = v / len, dx = (vx - n * glm::dot(n, vx)) / len, dy = (vy - n * glm::dot(n, vy)) / len;
+            ++checked;
+            if (!(q.s == glm::dvec2(n.x, n.y) && q.jacobian[0] == glm::dvec2(dx.x, dx.y) && q.jacobian[1] == glm::dvec2(dy.x, dy.y))) ++mismatches;
+        }
+    MESSAGE("texel centres checked: " << checked);
+    CHECK(mismatches == 0);
+}
+
 TEST_CASE("normal_map: bicubic approximates a smooth analytic field to third order, from_heights matches the gradient") {
     glint::pattern_params p;
     p.kind = glint::pattern::sinusoid;

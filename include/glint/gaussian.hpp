@@ -199,10 +199,14 @@ public:
     static vec4 element_sbox(const glm::dmat2& jacobian, double sh, double sr, double cu, double cs) {
         const glm::dvec2 j0 = jacobian[0], j1 = jacobian[1];
         const double m11 = j0.x * j0.x + j1.x * j1.x, m22 = j0.y * j0.y + j1.y * j1.y, m12 = j0.x * j0.y + j1.x * j1.y;
-        const double root = std::hypot(0.5 * (m11 - m22), m12), theta = 0.5 * std::atan2(2 * m12, m11 - m22);
+        const double root = std::hypot(0.5 * (m11 - m22), m12);
         const double sv1 = std::sqrt(0.5 * (m11 + m22) + root), sv2 = std::sqrt(std::max(0.0, 0.5 * (m11 + m22) - root));
         const auto radius = [&](double sv) { return static_cast<real>((sv * cu * sh + cs * std::sqrt(sr * sr + sv * sv * sh * sh)) * (1 + 1e-4) + 1e-6); };
-        return vec4(static_cast<real>(std::cos(theta)), static_cast<real>(std::sin(theta)), radius(sv1), radius(sv2));
+        // theta = atan2(2 m12, m11 - m22) / 2 by the half-angle formulas (cos 2 theta = (m11 - m22)
+        // / (2 root)): no atan2, cos or sin. Isotropic J J^T (root = 0) takes theta = 0.
+        const double c2 = root > 0 ? std::clamp(0.5 * (m11 - m22) / root, -1.0, 1.0) : 1.0;
+        const double c = std::sqrt(0.5 * (1 + c2)), sn = std::copysign(std::sqrt(0.5 * (1 - c2)), m12);
+        return vec4(static_cast<real>(c), static_cast<real>(sn), radius(sv1), radius(sv2));
     }
 
     // D_P(s) through the hierarchy whatever its cost (eval picks it where it pays); the same

@@ -54,8 +54,10 @@
 // finest level where its s-box overlaps at most 8 cells, listed in each; per cell, its lobes in
 // Morton order of position, and a complete binary tree over runs of 8 whose nodes hold the 4D box
 // (position box, s-box union). ZXW split at the median along alternating axes; the Morton order
-// splits at the median of a Z curve, which needs no stored split. Boundary lobes get a second such
-// set, in H coordinates and unclustered (Sec. 4.3).
+// splits at the median of a Z curve, which needs no stored split. Boundary lobes (ZXW give them
+// trees of their own, Sec. 4.3) are kept in lattice order with the first of each row of H: they lie
+// along the seams, a few percent of a footprint's seeds (3.5% for 128^2 blocks), so a query reads
+// the rows of its box and tests each s-box, which costs less than a walk and needs no trees.
 //
 // K-lobes (Sec. 4.4, Eq. 6-7). Each inner node of the sample's trees is clustered bottom-up:
 // the members' normal mean and mean squared deviation (MSE) are additive moments, so C = 1 costs
@@ -78,14 +80,19 @@
 // (and H's periodic images): the part inside B's square is moved into I and its trees walked; a
 // lobe found there counts only if its seed in H is B's own and not a boundary seed (seeds in B's
 // core, whose stencils reach only texels no other block can own, skip the test), then its term is
-// taken at its H position; the boundary set is walked in H. So every seed of H counts once, and
+// taken at its H position; the boundary lobes are read by rows of H. So every seed of H counts once, and
 // with K-lobes off eval equals the sum over all seeds of the materialised map, gaussian_pndf's eval
 // on materialize(), up to rounding (tests/unit/test_lobe_tree.cpp). With K-lobes on (ZXW's rule,
 // Alg. S2), a clustered node whose position extent is at most cluster_extent times the
 // footprint's smaller sd, and whose texels lie in B's interior runs (per block and row, the run of
-// texels whose seeds are B's own and not boundary seeds), adds its K-lobes that reach s and stops;
-// if none reach s it descends. Footprints whose culling box reaches more than 24 blocks from its
-// centre on an axis are shrunk to that (stats.clamped).
+// texels whose seeds are B's own and not boundary seeds), adds its K-lobes and stops, unless the
+// footprint's taper cuts one of them at its centroid (the node straddles the footprint's edge):
+// then it descends. A K-lobe whose normal lobe misses s stands in with 0, as in Eq. 13: its
+// members' normals lie within the MSE tau of its mean, and its lobe is as wide as their marginals.
+// Two exact prunings keep the walks short: B's box is cut to the bounding box of the texels B owns
+// (the cuts rarely give B texels past its stride), and a node is skipped where an axis of the
+// footprint's culling ellipse separates it (as gaussian_pndf's trees do). Footprints whose culling
+// box reaches more than 24 blocks from its centre on an axis are shrunk to that (stats.clamped).
 //
 // Paths (lobe_path). The trees are walked once per block the footprint overlaps and per grid
 // level, which small footprints cannot amortise; their seeds are few, so eval then sums the box's
@@ -487,13 +494,13 @@ public:
         f.find_boundary();
         f.find_interiors();
         f.build_set(f.sample_set_, f.sample_lobes_);
-        f.build_set(f.boundary_set_, f.boundary_lobes_);
+        f.index_boundary_rows();
         if (f.tau_ > 0) f.cluster(cp);
-        f.scratch_centres_ = {}, f.scratch_assign_ = {};  // k-means' work space, build only
+        f.scratch_centres_ = {}, f.scratch_ = {}, f.scratch_best_ = {}, f.scratch_assign_ = {};  // k-means' work space, build only
         f.report_.sample_lobes = f.sample_lobes_.size();
         f.report_.boundary_lobes = f.boundary_lobes_.size();
-        f.report_.listed = f.sample_set_.listed.size() + f.boundary_set_.listed.size();
-        f.report_.nodes = f.sample_set_.nodes.size() + f.boundary_set_.nodes.size();
+        f.report_.listed = f.sample_set_.listed.size();
+        f.report_.nodes = f.sample_set_.nodes.size();
         f.report_.klobes = f.klobes_.size();
         f.report_.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         return f;
@@ -616,8 +623,8 @@ public:
                    t.nodes.size() * sizeof(node);
         };
         return sample_lobes_.size() * sizeof(entry) + boundary_lobes_.size() * sizeof(entry) + boundary_index_.size() * sizeof(std::uint32_t) +
-               boundary_bits_.size() * sizeof(std::uint64_t) + set_bytes(sample_set_) + set_bytes(boundary_set_) + klobes_.size() * sizeof(klobe) +
-               map_.table_bytes() + map_.sample().normals().size() * sizeof(glm::vec3);
+               boundary_bits_.size() * sizeof(std::uint64_t) + boundary_rows_.size() * sizeof(std::uint32_t) + set_bytes(sample_set_) + klobes_.size() * sizeof(klobe) +
+               run_lo_.size() + run_hi_.size() + own_box_.size() * sizeof(glm::ivec4) + map_.table_bytes() + map_.sample().normals().size() * sizeof(glm::vec3);
     }
     const build_report& report() const noexcept { return report_; }
     real alpha_g() const noexcept { return alpha_g_; }
@@ -793,35 +800,75 @@ private:
 
     // Boundary seeds and their lobes, fitted on H. A seed is interior when its stencil's texels of
     // H are the same neighbours in I around the texel its owner block maps it to (then its lobe is
-    // that sample seed's, bit for bit); else it is a boundary seed.
+    // that sample seed's, bit for bit); else it is a boundary seed. Texel row by texel row, with
+    // where each texel comes from in I for the five rows the stencils of a row reach.
     void find_boundary() {
         const quilted_map& m = map_;
         const long W = m.width(), H = m.height();
         const int o = m.overlap(), st = m.stride(), e = ept_;
-        // Where each texel of H comes from in I, packed (y << 16 | x) so that a neighbour in I is
-        // +-1 or +-2^16 (the sample is narrower than 2^16 - 1: no carry fakes one). Build only.
-        std::vector<std::uint32_t> from(static_cast<std::size_t>(W * H));
+        // Each block's owned texels' bounding box in its square (x0, y0, x1, y1 inclusive): the
+        // texels past both overlap strips are its own; the strips' owners are found below.
+        own_box_.resize(static_cast<std::size_t>(m.blocks_x()) * static_cast<std::size_t>(m.blocks_y()));
         for (int by = 0; by < m.blocks_y(); ++by)
+            for (int bx = 0; bx < m.blocks_x(); ++bx)
+                own_box_[static_cast<std::size_t>(bx + m.blocks_x() * by)] = glm::ivec4(o, o, m.stride_x(bx) - 1, m.stride_y(by) - 1);
+        // Rows of `from` in a ring of 8: where each texel of H row y comes from in I, packed
+        // (y << 16 | x) so that a neighbour in I is +-1 or +-2^16 (the sample is narrower than
+        // 2^16 - 1: no carry fakes one).
+        std::vector<std::uint32_t> ring(static_cast<std::size_t>(8 * W));
+        const auto ring_row = [&](long y) { return ring.data() + static_cast<std::size_t>(((y % 8) + 8) % 8) * static_cast<std::size_t>(W); };
+        const auto wrapped = [](long v, long n) { return v < 0 ? v + n : (v >= n ? v - n : v); };  // |v| < 2n
+        // Whether texel row y crosses its blocks' cores (where only the texels near the blocks'
+        // sides are checked below).
+        const auto core_row = [&](long y) {
+            const long yy = wrapped(y, H);
+            const int by = std::min(static_cast<int>(yy / st), m.blocks_y() - 1), ly = static_cast<int>(yy - static_cast<long>(by) * st);
+            return ly >= o + 2 && ly < m.stride_y(by) - 2;
+        };
+        const auto fill_row = [&](long y) {
+            std::uint32_t* row = ring_row(y);
+            const long yy = wrapped(y, H);
+            const int by = std::min(static_cast<int>(yy / st), m.blocks_y() - 1), ly = static_cast<int>(yy - static_cast<long>(by) * st);
+            // At one seed per texel, a row whose neighbours and itself cross the cores is read only
+            // within 3 texels of each block's sides (the checks and the fits of core rows reach 1).
+            const bool sides_only = e == 1 && core_row(y - 1) && core_row(y) && core_row(y + 1);
             for (int bx = 0; bx < m.blocks_x(); ++bx) {
-                const int b = bx + m.blocks_x() * by;
-                const glm::ivec2 src = m.source(b);
-                const long x0 = static_cast<long>(bx) * st, y0 = static_cast<long>(by) * st;
-                for (int ly = 0; ly < m.stride_y(by); ++ly) {
-                    std::uint32_t* row = from.data() + (x0 + W * (y0 + ly));
-                    const std::uint32_t first = (static_cast<std::uint32_t>(src.y + ly) << 16) | static_cast<std::uint32_t>(src.x);
-                    for (int lx = 0; lx < m.stride_x(bx); ++lx) row[lx] = first + static_cast<std::uint32_t>(lx);
-                    // The overlap strips: owner_in() decides.
-                    for (int lx = 0; lx < (ly < o ? m.stride_x(bx) : std::min(o, m.stride_x(bx))); ++lx) {
-                        glm::ivec2 l;
-                        const glm::ivec2 q = m.source(m.owner_in(bx, by, lx, ly, &l)) + l;
-                        row[lx] = (static_cast<std::uint32_t>(q.y) << 16) | static_cast<std::uint32_t>(q.x);
+                const glm::ivec2 src = m.source(bx + m.blocks_x() * by);
+                std::uint32_t* out = row + static_cast<long>(bx) * st;
+                const std::uint32_t first = (static_cast<std::uint32_t>(src.y + ly) << 16) | static_cast<std::uint32_t>(src.x);
+                const int sx = m.stride_x(bx), a = sides_only ? std::min(o + 3, sx) : sx, z = sides_only ? std::max(a, sx - 3) : sx;
+                for (int lx = 0; lx < a; ++lx) out[lx] = first + static_cast<std::uint32_t>(lx);
+                for (int lx = z; lx < sx; ++lx) out[lx] = first + static_cast<std::uint32_t>(lx);
+                // The overlap strips: owner_in() decides. Past the top strip (ly >= O > every top
+                // cut) it reduces to the left cut: the left neighbour's texels lie left of it.
+                if (ly >= o) {
+                    const int b = bx + m.blocks_x() * by, lb = (bx == 0 ? m.blocks_x() - 1 : bx - 1) + m.blocks_x() * by;
+                    const int cut = std::min(m.cut_left(b, ly), m.stride_x(bx)), sl = m.stride_x(bx == 0 ? m.blocks_x() - 1 : bx - 1);
+                    const glm::ivec2 lsrc = m.source(lb);
+                    glm::ivec4& box = own_box_[static_cast<std::size_t>(lb)];
+                    if (cut > 0) box = glm::ivec4(std::min(box.x, sl), std::min(box.y, ly), std::max(box.z, cut - 1 + sl), std::max(box.w, ly));
+                    if (cut < o) {
+                        glm::ivec4& own = own_box_[static_cast<std::size_t>(b)];
+                        own = glm::ivec4(std::min(own.x, cut), own.y, own.z, own.w);
                     }
+                    const std::uint32_t lfirst = (static_cast<std::uint32_t>(lsrc.y + ly) << 16) | static_cast<std::uint32_t>(lsrc.x + sl);
+                    for (int lx = 0; lx < cut; ++lx) out[lx] = lfirst + static_cast<std::uint32_t>(lx);
+                    continue;
+                }
+                for (int lx = 0; lx < m.stride_x(bx); ++lx) {
+                    glm::ivec2 l;
+                    const int r = m.owner_in(bx, by, lx, ly, &l);
+                    glm::ivec4& box = own_box_[static_cast<std::size_t>(r)];
+                    box = glm::ivec4(std::min(box.x, l.x), std::min(box.y, l.y), std::max(box.z, l.x), std::max(box.w, l.y));
+                    const glm::ivec2 q = m.source(r) + l;
+                    out[lx] = (static_cast<std::uint32_t>(q.y) << 16) | static_cast<std::uint32_t>(q.x);
                 }
             }
+        };
         // The stencil (texels whose weight or derivative weight is non-zero, relative to
         // floor(u - 1/2)): at h = 1 seeds sit on texel centres, where Catmull-Rom's weights are
         // (0, 1, 0, 0) and its derivative's (-1/2, 0, 1/2, 0): the texel and its four neighbours.
-        // Finer lattices use all 4 x 4.
+        // Finer lattices use all 4 x 4. Either way rows y - 2 .. y + 2 of the seed's texel row y.
         int offsets[16][2], taps = 0;
         if (e == 1) {
             const int cross[5][2] = {{0, 0}, {-1, 0}, {1, 0}, {0, -1}, {0, 1}};
@@ -832,31 +879,55 @@ private:
         const long lw = k_.width, lh = k_.height;
         boundary_bits_.assign(static_cast<std::size_t>((lw * lh + 63) / 64), 0);
         boundary_index_.clear();
-        const auto wrapped = [](long v, long n) { return v < 0 ? v + n : (v >= n ? v - n : v); };  // |v| < 2n
+        boundary_lobes_.clear();
+        // Room for a band of 3 seeds along each block's two seams (3.5% of H's seeds for 128^2
+        // blocks, overlap 8): growing the vectors copies them.
+        const std::size_t expected = static_cast<std::size_t>(m.blocks_x()) * static_cast<std::size_t>(m.blocks_y()) * 6u * static_cast<std::size_t>(m.block() * e * e);
+        boundary_index_.reserve(expected), boundary_lobes_.reserve(expected);
+        const auto at = [&](long x, long y) { return ring_row(y)[wrapped(x, W)]; };
+        const std::vector<glm::vec3>& texels = m.sample().normals();
+        const std::size_t sw = static_cast<std::size_t>(m.sample().width());
+        const auto fetch = [&](long x, long y) -> const glm::vec3& {
+            const std::uint32_t q = at(x, y);
+            return texels[(q & 0xffffu) + sw * (q >> 16)];
+        };
+        const double h = 1.0 / e;
+        const auto add_boundary = [&](long i, long j) {
+            const std::uint32_t idx = static_cast<std::uint32_t>(i + lw * j);
+            boundary_bits_[idx >> 6] |= std::uint64_t(1) << (idx & 63);
+            boundary_index_.push_back(idx);
+            const glm::dvec2 u((static_cast<double>(i) + 0.5) * h, (static_cast<double>(j) + 0.5) * h);
+            boundary_lobes_.push_back(make_entry(normal_map::interpolate_with<double, 4>(fetch, u), u));
+        };
+        // One seed per texel: the cross of texels around it, read from the three rows directly.
+        const std::uint32_t *up = nullptr, *row = nullptr, *down = nullptr;
+        const auto check_centre = [&](long x, long y) {
+            const long xm = x == 0 ? W - 1 : x - 1, xp = x == W - 1 ? 0 : x + 1;
+            const std::uint32_t c = row[x];
+            if (row[xm] + 1u != c || row[xp] != c + 1u || up[x] + 0x10000u != c || down[x] != c + 0x10000u) add_boundary(x, y);
+        };
         const auto check = [&](long i, long j) {
-            const long tx = e == 1 ? i : i / e - ((i % e) < e / 2 ? 1 : 0), ty = e == 1 ? j : j / e - ((j % e) < e / 2 ? 1 : 0);  // floor(u - 1/2)
-            const bool inside = tx >= 1 && ty >= 1 && tx + 2 < W && ty + 2 < H;
-            const auto at = [&](long x, long y) { return from[static_cast<std::size_t>(inside ? x + W * y : wrapped(x, W) + W * wrapped(y, H))]; };
+            if (e == 1) return check_centre(i, j);
+            const long tx = i / e - ((i % e) < e / 2 ? 1 : 0), ty = j / e - ((j % e) < e / 2 ? 1 : 0);  // floor(u - 1/2)
             // The texel holding the seed, and where the stencil's taps should be relative to it.
-            const long cx = e == 1 ? i : i / e, cy = e == 1 ? j : j / e;
+            const long cx = i / e, cy = j / e;
             const std::uint32_t centre = at(cx, cy);
             for (int k = 0; k < taps; ++k) {
                 const long dx = tx + offsets[k][0] - cx, dy = ty + offsets[k][1] - cy;
-                if (at(cx + dx, cy + dy) != centre + static_cast<std::uint32_t>(dx) + (static_cast<std::uint32_t>(dy) << 16)) {
-                    const std::uint32_t idx = static_cast<std::uint32_t>(i + lw * j);
-                    boundary_bits_[idx >> 6] |= std::uint64_t(1) << (idx & 63);
-                    boundary_index_.push_back(idx);
-                    return;
-                }
+                if (at(cx + dx, cy + dy) != centre + static_cast<std::uint32_t>(dx) + (static_cast<std::uint32_t>(dy) << 16)) return add_boundary(i, j);
             }
         };
+        for (long y = -2; y <= 2; ++y) fill_row(y);
         // Only seeds outside the cores (texels O + 2 .. stride - 3 of their nominal block, whose
         // stencils reach only texels no other block can own), in lattice order.
         for (int by = 0; by < m.blocks_y(); ++by)
             for (int ly = 0; ly < m.stride_y(by); ++ly) {
+                const long y = static_cast<long>(by) * st + ly;
+                if (y > 0) fill_row(y + 2);
+                up = ring_row(y - 1), row = ring_row(y), down = ring_row(y + 1);
                 const bool core_y = ly >= o + 2 && ly < m.stride_y(by) - 2;
                 for (int sj = 0; sj < e; ++sj) {
-                    const long j = (static_cast<long>(by) * st + ly) * e + sj;
+                    const long j = y * e + sj;
                     for (int bx = 0; bx < m.blocks_x(); ++bx) {
                         const long i0 = static_cast<long>(bx) * st * e, i1 = i0 + static_cast<long>(m.stride_x(bx)) * e;
                         if (!core_y) {
@@ -868,26 +939,13 @@ private:
                     }
                 }
             }
-        // Their lobes, reading H's texels through the map.
-        const std::vector<glm::vec3>& texels = m.sample().normals();
-        const std::size_t sw = static_cast<std::size_t>(m.sample().width());
-        const auto fetch = [&](long x, long y) -> const glm::vec3& {
-            const std::uint32_t q = from[static_cast<std::size_t>(wrapped(x, W) + W * wrapped(y, H))];
-            return texels[(q & 0xffffu) + sw * (q >> 16)];
-        };
-        boundary_lobes_.resize(boundary_index_.size());
-        const double h = 1.0 / e;
-        for (std::size_t k = 0; k < boundary_index_.size(); ++k) {
-            const long i = boundary_index_[k] % lw, j = boundary_index_[k] / lw;
-            const glm::dvec2 u((static_cast<double>(i) + 0.5) * h, (static_cast<double>(j) + 0.5) * h);
-            boundary_lobes_[k] = make_entry(normal_map::interpolate_with<double, 4>(fetch, u), u);
-        }
     }
 
     // Per block and local texel row, a run [lo, hi) of texels whose seeds are the block's own and
-    // not boundary seeds (the run through the core, found by scanning out from it; empty in rows
-    // without a core), in sparse tables of range-max lo and range-min hi over rows: a K-lobe node
-    // whose box lies in these runs on every row it spans counts exactly the seeds B owns.
+    // not boundary seeds (in core rows the run out from the core; in the rows the cuts cross, the
+    // run through the middle texel, or none), in sparse tables of range-max lo and range-min hi over
+    // rows: a K-lobe node whose box lies in these runs on every row it spans counts exactly the
+    // seeds B owns.
     void find_interiors() {
         const quilted_map& m = map_;
         const int t = m.block(), o = m.overlap();
@@ -902,8 +960,11 @@ private:
             for (int bx = 0; bx < m.blocks_x(); ++bx) {
                 const int b = bx + m.blocks_x() * by;
                 const glm::ivec2 c = m.origin(b);
+                const int sx = m.stride_x(bx), sy = m.stride_y(by);
+                // B's own texels of its nominal square (owner_in's first case; past the stride
+                // B owns few, and a run may stop short), with no boundary seed.
                 const auto ok = [&](int lx, int ly) {
-                    if (!m.owns(bx, by, lx, ly)) return false;
+                    if (lx >= sx || ly >= sy || lx < m.cut_left(b, ly) || ly < m.cut_top(b, lx)) return false;
                     long x = static_cast<long>(c.x + lx), y = static_cast<long>(c.y + ly);
                     if (x >= m.width()) x -= m.width();
                     if (y >= m.height()) y -= m.height();
@@ -914,9 +975,13 @@ private:
                 };
                 std::uint8_t* lo = run_lo_.data() + static_cast<std::size_t>(b) * per_block;
                 std::uint8_t* hi = run_hi_.data() + static_cast<std::size_t>(b) * per_block;
-                const int sx = m.stride_x(bx), sy = m.stride_y(by);
-                for (int ly = o + 2; ly < sy - 2 && o + 2 < sx - 2; ++ly) {
-                    int a = o + 2, z = sx - 2;
+                // Rows through the core: the run out from the core. Rows the cuts cross (the top
+                // strip, the last rows): the run through the middle texel, where it is the block's.
+                const glm::ivec4 own = own_box_[static_cast<std::size_t>(b)];
+                for (int ly = own.y; ly <= own.w; ++ly) {
+                    const bool core = ly >= o + 2 && ly < sy - 2 && o + 2 < sx - 2;
+                    int a = core ? o + 2 : sx / 2, z = core ? sx - 2 : sx / 2;
+                    if (!core && !ok(a, ly)) continue;
                     while (a > 0 && ok(a - 1, ly)) --a;
                     while (z < t && ok(z, ly)) ++z;
                     lo[ly] = static_cast<std::uint8_t>(a), hi[ly] = static_cast<std::uint8_t>(z);
@@ -940,6 +1005,18 @@ private:
         while ((2 << l) <= n) ++l;
         const std::size_t r0 = base + static_cast<std::size_t>(l * t + y0), r1 = base + static_cast<std::size_t>(l * t + y1 + 1 - (1 << l));
         return std::max(run_lo_[r0], run_lo_[r1]) <= x0 && std::min(run_hi_[r0], run_hi_[r1]) > x1;
+    }
+
+    // The columns and rows of level l's cells that the oriented s-box b about n reaches (x0, x1,
+    // y0, y1, inclusive). The box is convex, so it overlaps at least one cell in each.
+    static glm::ivec4 cell_span(const lobe_set& t, const vec4& b, const vec4& us, int l) {
+        const int m = t.level_size[static_cast<std::size_t>(l)];
+        const double c = 2.0 / m, margin = 1e-6;
+        const double cs = static_cast<double>(b.x), sn = static_cast<double>(b.y), r1 = static_cast<double>(b.z), r2 = static_cast<double>(b.w);
+        const double sx = static_cast<double>(us.z), sy = static_cast<double>(us.w);
+        const double hx = r1 * std::fabs(cs) + r2 * std::fabs(sn) + margin, hy = r1 * std::fabs(sn) + r2 * std::fabs(cs) + margin;
+        const auto index = [&](double v) { return std::clamp(static_cast<int>(std::floor((v + 1) / c + 0.5)), 0, m); };
+        return glm::ivec4(index(sx - hx), index(sx + hx), index(sy - hy), index(sy + hy));
     }
 
     // Calls fn(cell) for each cell of level l (of t) that the oriented s-box b about n overlaps
@@ -986,17 +1063,26 @@ private:
             cells += static_cast<std::size_t>(m + 1) * static_cast<std::size_t>(m + 1);
         }
         const int levels = static_cast<int>(t.level_size.size());
-        std::vector<std::uint8_t> level(n, 0);
-        std::vector<std::uint32_t> count(cells, 0);
+        // Each lobe's cells, found once: those of the finest level where its s-box overlaps at most
+        // 8 (the coarsest level has 4 cells in all).
+        std::vector<std::uint32_t> count(cells, 0), cell_first(n + 1, 0), cell_list;
+        cell_list.reserve(2 * n);
         for (std::size_t e = 0; e < n; ++e) {
-            int l = 0;
-            for (;; ++l) {
+            std::uint32_t found[8];
+            for (int l = 0;; ++l) {
+                const glm::ivec4 span = cell_span(t, lobes[e].bound, lobes[e].el.us, l);
+                if (std::max(span.y - span.x, span.w - span.z) >= 8 && l + 1 < levels) continue;  // more than 8 columns or rows
                 int overlapped = 0;
-                for_each_cell(t, lobes[e].bound, lobes[e].el.us, l, [&](std::size_t) { ++overlapped; });
-                if (overlapped <= 8 || l + 1 == levels) break;
+                for_each_cell(t, lobes[e].bound, lobes[e].el.us, l, [&](std::size_t c) {
+                    if (overlapped < 8) found[overlapped] = static_cast<std::uint32_t>(c);
+                    ++overlapped;
+                });
+                if (overlapped <= 8 || l + 1 == levels) {
+                    for (int k = 0; k < std::min(overlapped, 8); ++k) ++count[found[k]], cell_list.push_back(found[k]);
+                    break;
+                }
             }
-            level[e] = static_cast<std::uint8_t>(l);
-            for_each_cell(t, lobes[e].bound, lobes[e].el.us, l, [&](std::size_t c) { ++count[c]; });
+            cell_first[e + 1] = static_cast<std::uint32_t>(cell_list.size());
         }
         t.cell_begin.assign(cells + 1, 0);
         for (std::size_t c = 0; c < cells; ++c) t.cell_begin[c + 1] = t.cell_begin[c] + count[c];
@@ -1014,7 +1100,7 @@ private:
         std::sort(key.begin(), key.end());
         for (const std::uint64_t k : key) {
             const std::size_t e = static_cast<std::size_t>(k & 0xffffffffu);
-            for_each_cell(t, lobes[e].bound, lobes[e].el.us, level[e], [&](std::size_t c) { t.listed[fill[c]++] = lobes[e]; });
+            for (std::uint32_t q = cell_first[e]; q < cell_first[e + 1]; ++q) t.listed[fill[cell_list[q]]++] = lobes[e];
         }
         // Position trees: a complete binary tree (heap order, root 1) over runs of 8 per cell.
         t.node_begin.assign(cells, 0);
@@ -1104,8 +1190,20 @@ private:
         const std::uint32_t n = last - first;
         const double dx = static_cast<double>(nd.x1) - static_cast<double>(nd.x0), dy = static_cast<double>(nd.y1) - static_cast<double>(nd.y0);
         const double alpha = static_cast<double>(tau_) / std::max(1e-12, dx * dx + dy * dy);
-        const auto dist = [&](const entry& e, const glm::dvec4& c) {
-            const double a = static_cast<double>(e.el.us.x) - c.x, b = static_cast<double>(e.el.us.y) - c.y, p = static_cast<double>(e.el.us.z) - c.z, q = static_cast<double>(e.el.us.w) - c.w;
+        // The members' (u, s) once, one array per coordinate, so that the loops over members below
+        // (distances to one centre at a time) vectorise; per member its nearest distance so far and
+        // that centre.
+        scratch_.resize(6 * static_cast<std::size_t>(n));
+        double *px = scratch_.data(), *py = px + n, *pz = py + n, *pw = pz + n, *nearest = pw + n, *bd = nearest + n;
+        std::vector<std::uint8_t>& best = scratch_best_;
+        best.resize(n);
+        for (std::uint32_t r = 0; r < n; ++r) {
+            const vec4& us = listed[first + r].el.us;
+            px[r] = us.x, py[r] = us.y, pz[r] = us.z, pw[r] = us.w;
+        }
+        const auto point = [&](std::uint32_t r) { return glm::dvec4(px[r], py[r], pz[r], pw[r]); };
+        const auto dist = [&](std::uint32_t r, const glm::dvec4& c) {
+            const double a = px[r] - c.x, b = py[r] - c.y, p = pz[r] - c.z, q = pw[r] - c.w;
             return alpha * (a * a + b * b) + p * p + q * q;
         };
         std::vector<glm::dvec4>& centre = scratch_centres_;
@@ -1116,48 +1214,45 @@ private:
             // k-means++ seeds.
             centre.assign(static_cast<std::size_t>(C), glm::dvec4(0));
             const auto pick = [&](std::uint32_t i) { return unit_from_bits<double>(pcg3d(glm::uvec3(salt, static_cast<std::uint32_t>(C), cp.seed * 977u + i)).x); };
-            const entry& e0 = listed[first + std::min(n - 1, static_cast<std::uint32_t>(pick(0) * n))];
-            centre[0] = glm::dvec4(e0.el.us.x, e0.el.us.y, e0.el.us.z, e0.el.us.w);
+            centre[0] = point(std::min(n - 1, static_cast<std::uint32_t>(pick(0) * n)));
+            for (std::uint32_t r = 0; r < n; ++r) nearest[r] = dist(r, centre[0]);
             for (int c = 1; c < C; ++c) {
                 double total = 0;
-                for (std::uint32_t r = 0; r < n; ++r) {
-                    double d = std::numeric_limits<double>::infinity();
-                    for (int q = 0; q < c; ++q) d = std::min(d, dist(listed[first + r], centre[static_cast<std::size_t>(q)]));
-                    total += d;
-                }
+                for (std::uint32_t r = 0; r < n; ++r) total += nearest[r];
                 double target = pick(static_cast<std::uint32_t>(c)) * total;
                 std::uint32_t chosen = n - 1;
                 for (std::uint32_t r = 0; r < n; ++r) {
-                    double d = std::numeric_limits<double>::infinity();
-                    for (int q = 0; q < c; ++q) d = std::min(d, dist(listed[first + r], centre[static_cast<std::size_t>(q)]));
-                    target -= d;
+                    target -= nearest[r];
                     if (target <= 0) {
                         chosen = r;
                         break;
                     }
                 }
-                const entry& e = listed[first + chosen];
-                centre[static_cast<std::size_t>(c)] = glm::dvec4(e.el.us.x, e.el.us.y, e.el.us.z, e.el.us.w);
+                const glm::dvec4 cc = centre[static_cast<std::size_t>(c)] = point(chosen);
+                for (std::uint32_t r = 0; r < n; ++r) nearest[r] = std::min(nearest[r], dist(r, cc));
             }
             // Lloyd steps: ECN for the trial, then on to convergence for C*.
             const auto lloyd = [&](int iters) {
                 for (int it = 0; it < iters; ++it) {
                     bool changed = it == 0;
-                    for (std::uint32_t r = 0; r < n; ++r) {
-                        int best = 0;
-                        double bd = dist(listed[first + r], centre[0]);
-                        for (int q = 1; q < C; ++q) {
-                            const double d = dist(listed[first + r], centre[static_cast<std::size_t>(q)]);
-                            if (d < bd) bd = d, best = q;
+                    // The nearest centre, the first of equals (centre by centre over the members).
+                    const glm::dvec4 c0 = centre[0];
+                    for (std::uint32_t r = 0; r < n; ++r) bd[r] = dist(r, c0), best[r] = 0;
+                    for (int q = 1; q < C; ++q) {
+                        const glm::dvec4 cq = centre[static_cast<std::size_t>(q)];
+                        for (std::uint32_t r = 0; r < n; ++r) {
+                            const double d = dist(r, cq);
+                            const bool closer = d < bd[r];
+                            bd[r] = closer ? d : bd[r];
+                            best[r] = closer ? static_cast<std::uint8_t>(q) : best[r];
                         }
-                        if (assign[r] != best) assign[r] = static_cast<std::uint8_t>(best), changed = true;
                     }
+                    for (std::uint32_t r = 0; r < n; ++r) changed |= assign[r] != best[r], assign[r] = best[r];
                     if (!changed) return;
                     std::array<glm::dvec4, 8> sum{};
                     std::array<double, 8> cnt{};
                     for (std::uint32_t r = 0; r < n; ++r) {
-                        const entry& e = listed[first + r];
-                        sum[assign[r]] += glm::dvec4(e.el.us.x, e.el.us.y, e.el.us.z, e.el.us.w);
+                        sum[assign[r]] += point(r);
                         cnt[assign[r]] += 1;
                     }
                     for (int q = 0; q < C; ++q)
@@ -1226,8 +1321,9 @@ private:
         }
     }
 
-    // A K-lobe's footprint term (header comment).
-    real klobe_term(const klobe& k, const vec2& u_mean, const frame& f, const vec2& s) const noexcept {
+    // A K-lobe's footprint term (header comment); *window_cut is set where the footprint's taper
+    // at the centroid (not the normal lobe) made it 0.
+    real klobe_term(const klobe& k, const vec2& u_mean, const frame& f, const vec2& s, bool* window_cut = nullptr) const noexcept {
         // The normal part first (cheap rejection).
         const vec2 d = s - k.n_mean;
         real g;
@@ -1251,7 +1347,10 @@ private:
         const vec2 eo = kernels::glint_pndf_offset(u_mean, f);
         const real m = eo.x * eo.x / f.kappa.x + eo.y * eo.y / f.kappa.y;
         const real win = kernels::glint_pndf_window(m, k_.cull_u);
-        if (!(win > real(0))) return real(0);
+        if (!(win > real(0))) {
+            if (window_cut) *window_cut = true;
+            return real(0);
+        }
         const real w = k.weight * f.norm * std::sqrt(f.kappa.x * f.kappa.y / det) * std::exp(real(-0.5) * q) * win;
         return w * g;
     }
@@ -1277,10 +1376,24 @@ private:
         return t.level_first[static_cast<std::size_t>(l)] + static_cast<std::size_t>(cx + (m + 1) * cy);
     }
 
-    // Walks cell c of set t over the position box [b0, b1]; leaf entries go to leaf(entry), and
-    // inner nodes to inner(node) first, which returns true to stop there.
+    // The footprint's culling ellipse in a walk's coordinates (I for the sample set, H's periodic
+    // image for the boundary set): centre, axis (the frame's), and half-axes cull_u sqrt(kappa),
+    // widened by a margin that covers float rounding.
+    struct ellipse {
+        glm::vec2 centre, axis, radius;
+    };
+    ellipse culling_ellipse(const frame& f, const vec2& centre) const noexcept {
+        const real c2 = k_.cull_u;
+        const glm::vec2 r(static_cast<float>(c2 * std::sqrt(f.kappa.x)), static_cast<float>(c2 * std::sqrt(f.kappa.y)));
+        return {glm::vec2(centre), glm::vec2(f.axis), r * 1.0001f + glm::vec2(0.01f)};
+    }
+
+    // Walks cell c of set t over the position box [b0, b1] and the ellipse e (a node is skipped
+    // where either axis of e separates it from e: a conservative test, the leaves test exactly);
+    // leaf entries go to leaf(entry), and inner nodes to inner(node) first, which returns true to
+    // stop there.
     template <class leaf_t, class inner_t>
-    void walk(const lobe_set& t, std::size_t c, const glm::vec2& b0, const glm::vec2& b1, const vec2& s, lobe_query_stats& st, leaf_t&& leaf, inner_t&& inner) const noexcept {
+    void walk(const lobe_set& t, std::size_t c, const glm::vec2& b0, const glm::vec2& b1, const ellipse& e, const vec2& s, lobe_query_stats& st, leaf_t&& leaf, inner_t&& inner) const noexcept {
         const std::uint32_t begin = t.cell_begin[c], end = t.cell_begin[c + 1];
         if (begin == end) return;
         const std::uint32_t p2 = leaves_p2(end - begin);
@@ -1295,6 +1408,10 @@ private:
             ++st.nodes;
             if (b.x0 > b1.x || b.x1 < b0.x || b.y0 > b1.y || b.y1 < b0.y) continue;
             if (sx < b.s0x || sx > b.s1x || sy < b.s0y || sy > b.s1y) continue;
+            const float dx = e.centre.x - 0.5f * (b.x0 + b.x1), dy = e.centre.y - 0.5f * (b.y0 + b.y1);
+            const float hx = 0.5f * (b.x1 - b.x0), hy = 0.5f * (b.y1 - b.y0), ax = std::fabs(e.axis.x), ay = std::fabs(e.axis.y);
+            if (std::fabs(e.axis.x * dx + e.axis.y * dy) - (hx * ax + hy * ay) > e.radius.x) continue;
+            if (std::fabs(e.axis.x * dy - e.axis.y * dx) - (hx * ay + hy * ax) > e.radius.y) continue;
             if (n >= p2) {
                 const std::uint32_t first = begin + 8 * (n - p2), last = std::min(end, first + 8);
                 for (std::uint32_t r = first; r < last; ++r) leaf(t.listed[r]);
@@ -1339,8 +1456,10 @@ private:
                 const glm::ivec2 src = m.source(blk);
                 const vec2 shift = vec2(real(src.x), real(src.y)) - vec2(xs[b].offset, ys[a].offset);  // I = H + shift
                 const real t = real(m.block());
-                const glm::vec2 b0(static_cast<float>(std::max(x0 + shift.x, real(src.x))), static_cast<float>(std::max(y0 + shift.y, real(src.y))));
-                const glm::vec2 b1(static_cast<float>(std::min(x1 + shift.x, real(src.x) + t)), static_cast<float>(std::min(y1 + shift.y, real(src.y) + t)));
+                // The box in I, cut to the texels B owns.
+                const glm::ivec4 own = own_box_[static_cast<std::size_t>(blk)];
+                const glm::vec2 b0(static_cast<float>(std::max(x0 + shift.x, real(src.x + own.x))), static_cast<float>(std::max(y0 + shift.y, real(src.y + own.y))));
+                const glm::vec2 b1(static_cast<float>(std::min(x1 + shift.x, real(src.x + own.z + 1))), static_cast<float>(std::min(y1 + shift.y, real(src.y + own.w + 1))));
                 if (b0.x > b1.x || b0.y > b1.y) continue;
                 // B's core in I: seeds whose stencil lies in the texels only B can own (no test needed).
                 const real cx0 = real(src.x + o_core) + real(1.5), cy0 = real(src.y + o_core) + real(1.5);
@@ -1372,19 +1491,23 @@ private:
                     const int tx0 = static_cast<int>(std::floor(nd.x0 + 2e-3f - static_cast<float>(src.x))), tx1 = static_cast<int>(std::floor(nd.x1 - 2e-3f - static_cast<float>(src.x)));
                     const int ty0 = static_cast<int>(std::floor(nd.y0 + 2e-3f - static_cast<float>(src.y))), ty1 = static_cast<int>(std::floor(nd.y1 - 2e-3f - static_cast<float>(src.y)));
                     if (!in_runs(blk, tx0, tx1, ty0, ty1)) return false;
-                    bool any = false;
+                    // The K-lobes stand in unless the footprint's taper cut one at its centroid
+                    // (the node straddles the footprint's edge: its members are taken one by one).
+                    real v[8];
+                    bool window_cut = false;
                     for (std::uint32_t q = 0; q < nd.kcount; ++q) {
                         const klobe& k = klobes_[nd.kfirst + q];
-                        const real v = klobe_term(k, k.u_mean - shift, f, s);
-                        if (v > real(0)) {
-                            sum += v;
-                            any = true;
-                            ++st.klobes;
-                        }
+                        v[q] = klobe_term(k, k.u_mean - shift, f, s, &window_cut);
                     }
-                    return any;
+                    if (window_cut) return false;
+                    for (std::uint32_t q = 0; q < nd.kcount; ++q) {
+                        sum += v[q];
+                        st.klobes += v[q] > real(0) ? 1u : 0u;  // as lobes count: those past the cheap rejections
+                    }
+                    return true;
                 };
-                for (int l = 0; l < static_cast<int>(sample_set_.level_size.size()); ++l) walk(sample_set_, cell_of(sample_set_, s, l), b0, b1, s, st, leaf, inner);
+                const ellipse el = culling_ellipse(f, f.mean + shift);
+                for (int l = 0; l < static_cast<int>(sample_set_.level_size.size()); ++l) walk(sample_set_, cell_of(sample_set_, s, l), b0, b1, el, s, st, leaf, inner);
             }
         return sum;
     }
@@ -1444,28 +1567,45 @@ private:
         return sum;
     }
 
-    // The boundary set's part: walked in H over the box's periodic images.
+    // The first boundary lobe of each row of H's lattice (boundary_index_ is ascending).
+    void index_boundary_rows() {
+        const long lw = k_.width, lh = k_.height;
+        boundary_rows_.assign(static_cast<std::size_t>(lh + 1), 0);
+        std::size_t k = 0;
+        for (long j = 0; j <= lh; ++j) {
+            while (k < boundary_index_.size() && static_cast<long>(boundary_index_[k]) < lw * j) ++k;
+            boundary_rows_[static_cast<std::size_t>(j)] = static_cast<std::uint32_t>(k);
+        }
+    }
+
+    // The boundary lobes' part: per periodic image of the box, its rows of H's lattice, and in each
+    // the boundary lobes between its columns.
     real sum_boundary(const frame& f, const vec2& s, lobe_query_stats& st) const noexcept {
         if (boundary_lobes_.empty()) return real(0);
-        const real W = static_cast<real>(map_.width()), H = static_cast<real>(map_.height());
-        const real x0 = f.mean.x - f.extent.x, x1 = f.mean.x + f.extent.x, y0 = f.mean.y - f.extent.y, y1 = f.mean.y + f.extent.y;
-        const long ix0 = static_cast<long>(std::floor(x0 / W)), ix1 = static_cast<long>(std::floor(x1 / W));
-        const long iy0 = static_cast<long>(std::floor(y0 / H)), iy1 = static_cast<long>(std::floor(y1 / H));
+        const auto rx = kernels::glint_pndf_axis_range(f.mean.x, f.extent.x, k_.spacing, k_.max_side);
+        const auto ry = kernels::glint_pndf_axis_range(f.mean.y, f.extent.y, k_.spacing, k_.max_side);
+        const long lw = k_.width, lh = k_.height;
+        const real W = static_cast<real>(lw) * k_.spacing, H = static_cast<real>(lh) * k_.spacing;
         real sum = 0;
-        for (long iy = iy0; iy <= iy1; ++iy)
-            for (long ix = ix0; ix <= ix1; ++ix) {
-                const vec2 offset(real(ix) * W, real(iy) * H);
-                const glm::vec2 b0(static_cast<float>(x0 - offset.x), static_cast<float>(y0 - offset.y));
-                const glm::vec2 b1(static_cast<float>(x1 - offset.x), static_cast<float>(y1 - offset.y));
-                const auto leaf = [&](const entry& e) GLINT_FLATTEN {
-                    if (outside_sbox(e.bound, e.el, s)) return;
-                    if (outside_footprint(vec2(e.el.us.x, e.el.us.y) + offset, f)) return;
-                    ++st.lobes;
-                    sum += term(e.el, vec2(e.el.us.x, e.el.us.y) + offset, f, s, k_);
-                };
-                const auto inner = [](const node&) { return false; };
-                for (int l = 0; l < static_cast<int>(boundary_set_.level_size.size()); ++l)
-                    walk(boundary_set_, cell_of(boundary_set_, s, l), b0, b1, s, st, leaf, inner);
+        for (long jy = static_cast<long>(std::floor(real(ry.x) / real(lh))); jy * lh <= ry.y; ++jy)
+            for (long jx = static_cast<long>(std::floor(real(rx.x) / real(lw))); jx * lw <= rx.y; ++jx) {
+                const vec2 offset(real(jx) * W, real(jy) * H);
+                // This image's part of the box, in lattice indices of H.
+                const long i0 = std::max(rx.x - jx * lw, 0L), i1 = std::min(rx.y - jx * lw, lw - 1);
+                const long j0 = std::max(ry.x - jy * lh, 0L), j1 = std::min(ry.y - jy * lh, lh - 1);
+                for (long j = j0; j <= j1; ++j) {
+                    const auto first = boundary_index_.begin() + boundary_rows_[static_cast<std::size_t>(j)];
+                    const auto last = boundary_index_.begin() + boundary_rows_[static_cast<std::size_t>(j + 1)];
+                    const std::uint32_t lo = static_cast<std::uint32_t>(i0 + lw * j), hi = static_cast<std::uint32_t>(i1 + lw * j);
+                    for (auto it = std::lower_bound(first, last, lo); it != last && *it <= hi; ++it) {
+                        const entry& e = boundary_lobes_[static_cast<std::size_t>(it - boundary_index_.begin())];
+                        if (outside_sbox(e.bound, e.el, s)) continue;
+                        const vec2 u = vec2(e.el.us.x, e.el.us.y) + offset;
+                        if (outside_footprint(u, f)) continue;
+                        ++st.lobes;
+                        sum += term(e.el, u, f, s, k_);
+                    }
+                }
             }
         return sum;
     }
@@ -1479,11 +1619,15 @@ private:
     std::vector<entry> sample_lobes_, boundary_lobes_;
     std::vector<std::uint32_t> boundary_index_;  // H lattice index of each boundary lobe, ascending
     std::vector<std::uint64_t> boundary_bits_;   // one bit per H seed: boundary
+    std::vector<glm::ivec4> own_box_;             // per block, its owned texels' bounding box (find_boundary)
     std::vector<std::uint8_t> run_lo_, run_hi_;  // per block, sparse tables of its interior runs (find_interiors)
     int run_levels_ = 0;
-    lobe_set sample_set_, boundary_set_;
+    lobe_set sample_set_;
+    std::vector<std::uint32_t> boundary_rows_;   // per row of H's lattice, its first boundary lobe (one past the end last)
     std::vector<klobe> klobes_;
     std::vector<glm::dvec4> scratch_centres_;
+    std::vector<double> scratch_;
+    std::vector<std::uint8_t> scratch_best_;
     std::vector<std::uint8_t> scratch_assign_;
     build_report report_{};
 };

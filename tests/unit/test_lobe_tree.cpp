@@ -294,10 +294,10 @@ TEST_CASE("lobe_tree: K-lobes keep their members' mass and means, and each clust
 
 TEST_CASE("lobe_tree: larger delta_k evaluates fewer terms and errs more, over 200 footprints") {
     // Aggregates over 200 footprints (sd 2 to 24 texels, log-uniform) and s drawn from the exact
-    // P-NDF: per query the counts can go either way (a cluster that misses s sends the walk down),
-    // and a larger tau can change a node's C* and so its K-lobes: the error is monotone only up
-    // to such swaps (measured within 0.3% of its level between delta_k 0.3 and 5), checked to 1%
-    // of its level, and strictly from delta_k 0.3 to 30.
+    // P-NDF: per query the counts can go either way (a cluster the footprint's edge cuts sends the
+    // walk down), and a larger tau can change a node's C* and so its K-lobes: the error is
+    // monotone only up to such swaps (measured within 0.3% of its level between delta_k 0.3 and
+    // 5), checked to 1% of its level, and strictly from delta_k 0.3 to 30.
     const auto s = sample_map(glint::pattern::flakes, 64);
     const auto h = quilt(s, 256, 32, 6);
     const auto exact = make_forest(h, 0.005, 0.0);

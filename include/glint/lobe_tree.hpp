@@ -1027,9 +1027,8 @@ private:
         const double c = 2.0 / m, margin = 1e-6;
         const double cs = static_cast<double>(b.x), sn = static_cast<double>(b.y), r1 = static_cast<double>(b.z), r2 = static_cast<double>(b.w);
         const double sx = static_cast<double>(us.z), sy = static_cast<double>(us.w);
-        const double hx = r1 * std::fabs(cs) + r2 * std::fabs(sn) + margin, hy = r1 * std::fabs(sn) + r2 * std::fabs(cs) + margin;
-        const auto index = [&](double v) { return std::clamp(static_cast<int>(std::floor((v + 1) / c + 0.5)), 0, m); };
-        const int x0 = index(sx - hx), x1 = index(sx + hx), y0 = index(sy - hy), y1 = index(sy + hy);
+        const glm::ivec4 span = cell_span(t, b, us, l);
+        const int x0 = span.x, x1 = span.y, y0 = span.z, y1 = span.w;
         const double reach = 0.5 * c * (std::fabs(cs) + std::fabs(sn)) + margin;
         for (int y = y0; y <= y1; ++y)
             for (int x = x0; x <= x1; ++x) {

@@ -969,8 +969,10 @@ private:
                     if (x >= m.width()) x -= m.width();
                     if (y >= m.height()) y -= m.height();
                     for (int dj = 0; dj < ept_; ++dj)
-                        for (int di = 0; di < ept_; ++di)
-                            if (is_boundary(x * ept_ + di, y * ept_ + dj)) return false;
+                        for (int di = 0; di < ept_; ++di) {
+                            const std::size_t idx = static_cast<std::size_t>(x * ept_ + di + k_.width * (y * ept_ + dj));  // in H: no wrap
+                            if ((boundary_bits_[idx >> 6] >> (idx & 63)) & 1u) return false;
+                        }
                     return true;
                 };
                 std::uint8_t* lo = run_lo_.data() + static_cast<std::size_t>(b) * per_block;
@@ -1189,9 +1191,8 @@ private:
         const std::uint32_t n = last - first;
         const double dx = static_cast<double>(nd.x1) - static_cast<double>(nd.x0), dy = static_cast<double>(nd.y1) - static_cast<double>(nd.y0);
         const double alpha = static_cast<double>(tau_) / std::max(1e-12, dx * dx + dy * dy);
-        // The members' (u, s) once, one array per coordinate, so that the loops over members below
-        // (distances to one centre at a time) vectorise; per member its nearest distance so far and
-        // that centre.
+        // The members' (u, s) once, one array per coordinate (the seeding's loops over members
+        // vectorise); per member its nearest distance so far and that centre.
         scratch_.resize(7 * static_cast<std::size_t>(n));
         double *px = scratch_.data(), *py = px + n, *pz = py + n, *pw = pz + n, *nearest = pw + n, *bd = nearest + n, *best = bd + n;
         for (std::uint32_t r = 0; r < n; ++r) {

@@ -25,16 +25,12 @@ double unit(std::uint32_t i, std::uint32_t k) { return glint::unit_from_bits<dou
 
 double seconds_since(std::chrono::steady_clock::time_point t) { return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count(); }
 
-// The least time of n runs of fn: on a shared machine other load and page faults only add time.
+// The time of one call of fn.
 template <class fn_t>
-double least_seconds(int n, fn_t&& fn) {
-    double best = 1e30;
-    for (int i = 0; i < n; ++i) {
-        const auto t0 = std::chrono::steady_clock::now();
-        fn();
-        best = std::min(best, seconds_since(t0));
-    }
-    return best;
+double seconds_of(fn_t&& fn) {
+    const auto t0 = std::chrono::steady_clock::now();
+    fn();
+    return seconds_since(t0);
 }
 
 glint::normal_map sample(glint::pattern kind, int size) {
@@ -183,9 +179,9 @@ section lobe_tree_section(double min_time) {
     // Builds in alternating rounds, each time the least of its rounds.
     double forest0_s = 1e300, forest_s = 1e300, direct_s = 1e300;
     for (int round = 0; round < 3; ++round) {
-        forest0_s = std::min(forest0_s, least_seconds(1, [&] { build(h, glint::lobe_kind::gaussian, 0.005f, 0.0f); }));
-        forest_s = std::min(forest_s, least_seconds(1, [&] { build(h, glint::lobe_kind::gaussian, 0.005f, 0.3f); }));
-        direct_s = std::min(direct_s, least_seconds(1, [&] { glint::gaussian_pndf<float>::build(m, g); }));
+        forest0_s = std::min(forest0_s, seconds_of([&] { build(h, glint::lobe_kind::gaussian, 0.005f, 0.0f); }));
+        forest_s = std::min(forest_s, seconds_of([&] { build(h, glint::lobe_kind::gaussian, 0.005f, 0.3f); }));
+        direct_s = std::min(direct_s, seconds_of([&] { glint::gaussian_pndf<float>::build(m, g); }));
     }
     md << "### Preprocessing and memory (scratched metal, sigma_r 0.005)\n\n"
        << "Build times: three rounds of one build each, alternating, and the least of each's rounds (the machine is shared: other load "
@@ -255,7 +251,8 @@ section lobe_tree_section(double min_time) {
     {
         const auto h64 = quilt(s_metal, side, 64, 8);
         const auto f64 = build(h64, glint::lobe_kind::gaussian, 0.005f, 0.3f);
-        const double build64 = least_seconds(3, [&] { build(h64, glint::lobe_kind::gaussian, 0.005f, 0.3f); });
+        double build64 = 1e300;  // the least of 3
+        for (int round = 0; round < 3; ++round) build64 = std::min(build64, seconds_of([&] { build(h64, glint::lobe_kind::gaussian, 0.005f, 0.3f); }));
         const auto d64 = glint::gaussian_pndf<float>::build(h64.materialize(), g);
         const auto q64 = queries(d64, side);
         const timed_pair tp64 = time_pair([&](const query& x) { return d64.eval(x.fp, x.s); }, [&](const query& x) { return f64.eval(x.fp, x.s); }, q64, min_time);

@@ -818,17 +818,22 @@ private:
         std::vector<std::uint32_t> ring(static_cast<std::size_t>(8 * W));
         const auto ring_row = [&](long y) { return ring.data() + static_cast<std::size_t>(y & 7) * static_cast<std::size_t>(W); };  // y mod 8, y >= -2
         const auto wrapped = [](long v, long n) { return v < 0 ? v + n : (v >= n ? v - n : v); };  // |v| < 2n
+        // Texel row y's block row and its row within it.
+        const auto block_row = [&](long y) {
+            const long yy = wrapped(y, H);
+            const int by = std::min(static_cast<int>(yy / st), m.blocks_y() - 1);
+            return glm::ivec2(by, static_cast<int>(yy - static_cast<long>(by) * st));
+        };
         // Whether texel row y crosses its blocks' cores (where only the texels near the blocks'
         // sides are checked below).
         const auto core_row = [&](long y) {
-            const long yy = wrapped(y, H);
-            const int by = std::min(static_cast<int>(yy / st), m.blocks_y() - 1), ly = static_cast<int>(yy - static_cast<long>(by) * st);
-            return ly >= o + 2 && ly < m.stride_y(by) - 2;
+            const glm::ivec2 r = block_row(y);
+            return r.y >= o + 2 && r.y < m.stride_y(r.x) - 2;
         };
         const auto fill_row = [&](long y) {
             std::uint32_t* row = ring_row(y);
-            const long yy = wrapped(y, H);
-            const int by = std::min(static_cast<int>(yy / st), m.blocks_y() - 1), ly = static_cast<int>(yy - static_cast<long>(by) * st);
+            const glm::ivec2 bl = block_row(y);
+            const int by = bl.x, ly = bl.y;
             // At one seed per texel, a row whose neighbours and itself cross the cores is read only
             // within 3 texels of each block's sides (the checks and the fits of core rows reach 1).
             const bool sides_only = e == 1 && core_row(y - 1) && core_row(y) && core_row(y + 1);
@@ -925,7 +930,7 @@ private:
                 const long y = static_cast<long>(by) * st + ly;
                 if (y > 0) fill_row(y + 2);
                 up = ring_row(y - 1), row = ring_row(y), down = ring_row(y + 1);
-                const bool core_y = ly >= o + 2 && ly < m.stride_y(by) - 2;
+                const bool core_y = core_row(y);
                 for (int sj = 0; sj < e; ++sj) {
                     const long j = y * e + sj;
                     for (int bx = 0; bx < m.blocks_x(); ++bx) {

@@ -1390,8 +1390,8 @@ private:
         glm::vec2 centre, axis, radius;
     };
     ellipse culling_ellipse(const frame& f, const vec2& centre) const noexcept {
-        const real c2 = k_.cull_u;
-        const glm::vec2 r(static_cast<float>(c2 * std::sqrt(f.kappa.x)), static_cast<float>(c2 * std::sqrt(f.kappa.y)));
+        const real cu = k_.cull_u;
+        const glm::vec2 r(static_cast<float>(cu * std::sqrt(f.kappa.x)), static_cast<float>(cu * std::sqrt(f.kappa.y)));
         return {glm::vec2(centre), glm::vec2(f.axis), r * 1.0001f + glm::vec2(0.01f)};
     }
 

@@ -66,18 +66,20 @@
 // the members' normal mean and mean squared deviation (MSE) are additive moments, so C = 1 costs
 // O(1) per node; where it fails, k-means with Eq. 6's distance a |P - P'|^2 + |N - N'|^2
 // (a = tau / L^2, L the node's position diagonal: a node-sized shift weighs as much as the
-// threshold), k-means++ seeds from a hash of the node and C, trial_iters Lloyd steps per C
-// (ECN), C = 2 .. max_clusters (MCN); C* is the least C whose every cluster has MSE <= tau,
-// then Lloyd runs to convergence (max_iters; kept only if still accepted); a node with no such C,
-// or whose two children are both unclustered, or with more than max_node members beyond C = 1,
-// has none. delta_k is the paper's coefficient, an MSE in 8-bit code values (ZXW's preprocessing
-// keeps 0-255 normals): tau = delta_k (2/255)^2 in s (delta_k 0.3: RMS 0.0043; 5: 0.018; 30:
-// 0.043). A K-lobe is moment-matched to its members (Eq. 7, N the member count): weight N a,
-// position mean and Sigma_pj = sigma_h^2 I + Cov(u_i); Gaussian normal lobe N(s; mean n_i,
-// sigma_r^2 I + Cov(n_i) + sigma_h^2 mean(J_i J_i^T)) (the members' marginals as the footprint
-// grows), product lobes the same D with a^2 = sigma_r^2 + tr Cov(n_i) about the mean normal. Its
-// footprint term is N a N2(mu; u_bar, Sigma_P + Sigma_pj) G_nj(s), with the members' footprint
-// taper taken at u_bar.
+// threshold), k-means++ seeds from a hash of the node (C's seeds are the first C of one
+// sequence), trial_iters Lloyd steps per C (ECN), C = 2 .. max_clusters (MCN); C* is the least C
+// whose every cluster has MSE <= tau, then Lloyd runs to convergence (max_iters; kept only if
+// still accepted); a node with no such C, or whose two children are both unclustered, has none,
+// and beyond C = 1 k-means runs only where both children are clustered (or leaves) and the node
+// has at most max_node members (with one child unclustered it failed at 92% of scratched metal's
+// nodes, for a third of k-means' time). delta_k is the paper's coefficient, an MSE in 8-bit code
+// values (ZXW's preprocessing keeps 0-255 normals): tau = delta_k (2/255)^2 in s (delta_k 0.3:
+// RMS 0.0043; 5: 0.018; 30: 0.043). A K-lobe is moment-matched to its members (Eq. 7, N the
+// member count): weight N a, position mean and Sigma_pj = sigma_h^2 I + Cov(u_i); Gaussian
+// normal lobe N(s; mean n_i, sigma_r^2 I + Cov(n_i) + sigma_h^2 mean(J_i J_i^T)) (the members'
+// marginals as the footprint grows), product lobes the same D with a^2 = sigma_r^2 + tr Cov(n_i)
+// about the mean normal. Its footprint term is N a N2(mu; u_bar, Sigma_P + Sigma_pj) G_nj(s),
+// with the members' footprint taper taken at u_bar.
 //
 // Query (Sec. 5.3, Alg. S1-S2). The footprint's culling box is cut by every block it overlaps
 // (and H's periodic images): the part inside B's square is moved into I and its trees walked; a
@@ -864,14 +866,24 @@ private:
                     for (int lx = 0; lx < cut; ++lx) out[lx] = lfirst + static_cast<std::uint32_t>(lx);
                     continue;
                 }
+                // Texel by texel; the owners' boxes grow once per run of one owner (its texels
+                // lie on one row of its square, consecutive).
+                int run_owner = -1;
+                glm::ivec2 run_first(0), run_last(0);
+                const auto grow = [&] {
+                    if (run_owner < 0) return;
+                    glm::ivec4& box = own_box_[static_cast<std::size_t>(run_owner)];
+                    box = glm::ivec4(std::min(box.x, run_first.x), std::min(box.y, run_first.y), std::max(box.z, run_last.x), std::max(box.w, run_last.y));
+                };
                 for (int lx = 0; lx < m.stride_x(bx); ++lx) {
                     glm::ivec2 l;
                     const int r = m.owner_in(bx, by, lx, ly, &l);
-                    glm::ivec4& box = own_box_[static_cast<std::size_t>(r)];
-                    box = glm::ivec4(std::min(box.x, l.x), std::min(box.y, l.y), std::max(box.z, l.x), std::max(box.w, l.y));
+                    if (r != run_owner) grow(), run_owner = r, run_first = l;
+                    run_last = l;
                     const glm::ivec2 q = m.source(r) + l;
                     out[lx] = (static_cast<std::uint32_t>(q.y) << 16) | static_cast<std::uint32_t>(q.x);
                 }
+                grow();
             }
         };
         // The stencil (texels whose weight or derivative weight is non-zero, relative to
@@ -983,31 +995,36 @@ private:
                 const int b = bx + m.blocks_x() * by;
                 const glm::ivec2 c = m.origin(b);
                 const int sx = m.stride_x(bx), sy = m.stride_y(by);
-                // B's own texels of its nominal square (owner_in's first case; past the stride
-                // B owns few, and a run may stop short), with no boundary seed.
-                const auto ok = [&](int lx, int ly) {
-                    if (lx >= sx || ly >= sy || lx < m.cut_left(b, ly) || ly < m.cut_top(b, lx)) return false;
-                    long x = static_cast<long>(c.x + lx), y = static_cast<long>(c.y + ly);
-                    if (x >= m.width()) x -= m.width();
-                    if (y >= m.height()) y -= m.height();
-                    for (int dj = 0; dj < ept_; ++dj)
-                        for (int di = 0; di < ept_; ++di) {
-                            const std::size_t idx = static_cast<std::size_t>(x * ept_ + di + k_.width * (y * ept_ + dj));  // in H: no wrap
-                            if ((boundary_bits_[idx >> 6] >> (idx & 63)) & 1u) return false;
-                        }
-                    return true;
-                };
                 std::uint8_t* lo = run_lo_.data() + static_cast<std::size_t>(b) * per_block;
                 std::uint8_t* hi = run_hi_.data() + static_cast<std::size_t>(b) * per_block;
                 // Rows through the core: the run out from the core. Rows the cuts cross (the top
                 // strip, the last rows): the run through the middle texel, where it is the block's.
                 const glm::ivec4 own = own_box_[static_cast<std::size_t>(b)];
-                for (int ly = own.y; ly <= own.w; ++ly) {
+                for (int ly = own.y; ly <= std::min(own.w, sy - 1); ++ly) {
+                    // B's own texels of its nominal square (owner_in's first case; past the stride
+                    // B owns few, and a run may stop short), with no boundary seed. Rows past the
+                    // top strip (ly >= O, below every top cut) test only the left cut.
+                    const int left = m.cut_left(b, ly);
+                    const bool top_strip = ly < o;
+                    long y = static_cast<long>(c.y + ly);
+                    if (y >= m.height()) y -= m.height();
+                    const std::size_t row = static_cast<std::size_t>(k_.width) * static_cast<std::size_t>(y * ept_);
+                    const auto ok = [&](int lx) {
+                        if (lx >= sx || lx < left || (top_strip && ly < m.cut_top(b, lx))) return false;
+                        long x = static_cast<long>(c.x + lx);
+                        if (x >= m.width()) x -= m.width();
+                        for (int dj = 0; dj < ept_; ++dj)
+                            for (int di = 0; di < ept_; ++di) {
+                                const std::size_t idx = row + static_cast<std::size_t>(k_.width) * static_cast<std::size_t>(dj) + static_cast<std::size_t>(x * ept_ + di);  // in H: no wrap
+                                if ((boundary_bits_[idx >> 6] >> (idx & 63)) & 1u) return false;
+                            }
+                        return true;
+                    };
                     const bool core = ly >= o + 2 && ly < sy - 2 && o + 2 < sx - 2;
                     int a = core ? o + 2 : sx / 2, z = core ? sx - 2 : sx / 2;
-                    if (!core && !ok(a, ly)) continue;
-                    while (a > 0 && ok(a - 1, ly)) --a;
-                    while (z < t && ok(z, ly)) ++z;
+                    if (!core && !ok(a)) continue;
+                    while (a > 0 && ok(a - 1)) --a;
+                    while (z < t && ok(z)) ++z;
                     lo[ly] = static_cast<std::uint8_t>(a), hi[ly] = static_cast<std::uint8_t>(z);
                 }
                 for (int l = 1; l < levels; ++l)
@@ -1031,35 +1048,39 @@ private:
         return std::max(run_lo_[r0], run_lo_[r1]) <= x0 && std::min(run_hi_[r0], run_hi_[r1]) > x1;
     }
 
-    // The columns and rows of level l's cells that the oriented s-box b about n reaches (x0, x1,
-    // y0, y1, inclusive). The box is convex, so it overlaps at least one cell in each.
-    static glm::ivec4 cell_span(const lobe_set& t, const vec4& b, const vec4& us, int l) {
-        const int m = t.level_size[static_cast<std::size_t>(l)];
-        const double c = 2.0 / m, margin = 1e-6;
+    // The cells listing a lobe with oriented s-box b about n (us.zw): those of the finest level where
+    // b overlaps at most 8 (the coarsest level has 4 cells in all), written to found; returns their
+    // count. A cell overlaps where its square, widened by the margin, meets the box (gaussian.hpp's
+    // for_each_cell): the box's axis-aligned bounds give the columns and rows, and each cell of that
+    // span is tested on the box's own axes.
+    static int lobe_cells(const lobe_set& t, const vec4& b, const vec4& us, std::uint32_t* found) {
+        const double margin = 1e-6;
         const double cs = static_cast<double>(b.x), sn = static_cast<double>(b.y), r1 = static_cast<double>(b.z), r2 = static_cast<double>(b.w);
         const double sx = static_cast<double>(us.z), sy = static_cast<double>(us.w);
-        const double hx = r1 * std::fabs(cs) + r2 * std::fabs(sn) + margin, hy = r1 * std::fabs(sn) + r2 * std::fabs(cs) + margin;
-        const auto index = [&](double v) { return std::clamp(static_cast<int>(std::floor((v + 1) / c + 0.5)), 0, m); };
-        return glm::ivec4(index(sx - hx), index(sx + hx), index(sy - hy), index(sy + hy));
-    }
-
-    // Calls fn(cell) for each cell of level l (of t) that the oriented s-box b about n overlaps
-    // (gaussian.hpp's for_each_cell).
-    template <class fn_t>
-    static void for_each_cell(const lobe_set& t, const vec4& b, const vec4& us, int l, fn_t&& fn) {
-        const int m = t.level_size[static_cast<std::size_t>(l)];
-        const double c = 2.0 / m, margin = 1e-6;
-        const double cs = static_cast<double>(b.x), sn = static_cast<double>(b.y), r1 = static_cast<double>(b.z), r2 = static_cast<double>(b.w);
-        const double sx = static_cast<double>(us.z), sy = static_cast<double>(us.w);
-        const glm::ivec4 span = cell_span(t, b, us, l);
-        const int x0 = span.x, x1 = span.y, y0 = span.z, y1 = span.w;
-        const double reach = 0.5 * c * (std::fabs(cs) + std::fabs(sn)) + margin;
-        for (int y = y0; y <= y1; ++y)
-            for (int x = x0; x <= x1; ++x) {
-                const double dx = -1 + x * c - sx, dy = -1 + y * c - sy;
-                if (std::fabs(dx * cs + dy * sn) > r1 + reach || std::fabs(dy * cs - dx * sn) > r2 + reach) continue;
-                fn(t.level_first[static_cast<std::size_t>(l)] + static_cast<std::size_t>(x + (m + 1) * y));
-            }
+        const double acs = std::fabs(cs), asn = std::fabs(sn);
+        const double hx = r1 * acs + r2 * asn + margin, hy = r1 * asn + r2 * acs + margin;
+        const int levels = static_cast<int>(t.level_size.size());
+        for (int l = 0; l < levels; ++l) {
+            const int m = t.level_size[static_cast<std::size_t>(l)];
+            const double c = 2.0 / m, per = 0.5 * m;  // m is a power of 2: (v + 1) * per is (v + 1) / c exactly
+            // Clamped first, then truncated: on [0, m] truncation is floor.
+            const auto index = [&](double v) { return static_cast<int>(std::clamp((v + 1) * per + 0.5, 0.0, static_cast<double>(m))); };
+            const int x0 = index(sx - hx), x1 = index(sx + hx), y0 = index(sy - hy), y1 = index(sy + hy);
+            const bool last = l + 1 == levels;
+            if (std::max(x1 - x0, y1 - y0) >= 8 && !last) continue;  // more than 8 columns or rows
+            const double reach = 0.5 * c * (acs + asn) + margin;
+            const std::size_t first = t.level_first[static_cast<std::size_t>(l)];
+            int overlapped = 0;
+            for (int y = y0; y <= y1 && overlapped <= 8; ++y)  // a ninth cell: on to the next level
+                for (int x = x0; x <= x1; ++x) {
+                    const double dx = -1 + x * c - sx, dy = -1 + y * c - sy;
+                    if (std::fabs(dx * cs + dy * sn) > r1 + reach || std::fabs(dy * cs - dx * sn) > r2 + reach) continue;
+                    if (overlapped < 8) found[overlapped] = static_cast<std::uint32_t>(first + static_cast<std::size_t>(x + (m + 1) * y));
+                    ++overlapped;
+                }
+            if (overlapped <= 8 || last) return std::min(overlapped, 8);
+        }
+        return 0;  // not reached: the last level returns
     }
 
     // The grids, lists and trees of one lobe set.
@@ -1085,26 +1106,13 @@ private:
             t.level_first.push_back(cells);
             cells += static_cast<std::size_t>(m + 1) * static_cast<std::size_t>(m + 1);
         }
-        const int levels = static_cast<int>(t.level_size.size());
-        // Each lobe's cells, found once: those of the finest level where its s-box overlaps at most
-        // 8 (the coarsest level has 4 cells in all).
+        // Each lobe's cells, found once (lobe_cells).
         std::vector<std::uint32_t> count(cells, 0), cell_first(n + 1, 0), cell_list;
         cell_list.reserve(2 * n);
         for (std::size_t e = 0; e < n; ++e) {
             std::uint32_t found[8];
-            for (int l = 0;; ++l) {
-                const glm::ivec4 span = cell_span(t, lobes[e].bound, lobes[e].el.us, l);
-                if (std::max(span.y - span.x, span.w - span.z) >= 8 && l + 1 < levels) continue;  // more than 8 columns or rows
-                int overlapped = 0;
-                for_each_cell(t, lobes[e].bound, lobes[e].el.us, l, [&](std::size_t c) {
-                    if (overlapped < 8) found[overlapped] = static_cast<std::uint32_t>(c);
-                    ++overlapped;
-                });
-                if (overlapped <= 8 || l + 1 == levels) {
-                    for (int k = 0; k < std::min(overlapped, 8); ++k) ++count[found[k]], cell_list.push_back(found[k]);
-                    break;
-                }
-            }
+            const int k = lobe_cells(t, lobes[e].bound, lobes[e].el.us, found);
+            for (int q = 0; q < k; ++q) ++count[found[q]], cell_list.push_back(found[q]);
             cell_first[e + 1] = static_cast<std::uint32_t>(cell_list.size());
         }
         t.cell_begin.assign(cells + 1, 0);
@@ -1113,14 +1121,25 @@ private:
         std::vector<std::uint32_t> fill(t.cell_begin.begin(), t.cell_begin.end() - 1);
         // Lobes in Morton order of their seed's lattice position (from its coordinates: the
         // boundary lobes are not a full lattice), so each cell's list comes out sorted.
-        std::vector<std::uint64_t> key(n);
+        // A stable radix sort on the Morton code, 11 bits a pass (the lobes start in index order, so
+        // ties keep it): a quarter of std::sort's time on 10^5 keys.
+        std::vector<std::uint64_t> key(n), sorted(n);
         const double inv = static_cast<double>(ept_);
+        std::uint32_t bits = 0;
         for (std::size_t e = 0; e < n; ++e) {
-            const auto x = static_cast<std::uint32_t>(std::floor(static_cast<double>(lobes[e].el.us.x) * inv));
-            const auto y = static_cast<std::uint32_t>(std::floor(static_cast<double>(lobes[e].el.us.y) * inv));
-            key[e] = (static_cast<std::uint64_t>(morton2(x, y)) << 32) | e;
+            const auto x = static_cast<std::uint32_t>(static_cast<double>(lobes[e].el.us.x) * inv);  // u >= 0: truncation is floor
+            const auto y = static_cast<std::uint32_t>(static_cast<double>(lobes[e].el.us.y) * inv);
+            const std::uint32_t code = morton2(x, y);
+            bits |= code;
+            key[e] = (static_cast<std::uint64_t>(code) << 32) | e;
         }
-        std::sort(key.begin(), key.end());
+        for (int shift = 32; shift < 64 && (bits >> (shift - 32)) != 0; shift += 11) {
+            std::array<std::uint32_t, 2049> start{};
+            for (const std::uint64_t k : key) ++start[((k >> shift) & 2047u) + 1];
+            for (std::size_t d = 1; d < start.size(); ++d) start[d] += start[d - 1];
+            for (const std::uint64_t k : key) sorted[start[(k >> shift) & 2047u]++] = k;
+            key.swap(sorted);
+        }
         for (const std::uint64_t k : key) {
             const std::size_t e = static_cast<std::size_t>(k & 0xffffffffu);
             for (std::uint32_t q = cell_first[e]; q < cell_first[e + 1]; ++q) t.listed[fill[cell_list[q]]++] = lobes[e];
@@ -1208,66 +1227,77 @@ private:
         return k;
     }
 
+    // One centre c (index q) against the members: where it is nearer than bd[r] (any, for q = 0),
+    // bd[r] and best[r] take its distance and q (the index as a float: one type in the loop). The
+    // arrays do not overlap, so the loop runs 4 wide.
+    static void nearer(const float* __restrict px, const float* __restrict py, const float* __restrict pz, const float* __restrict pw, std::uint32_t n,
+                       const glm::vec4& c, float alpha, float q, float* __restrict bd, float* __restrict best) {
+        const float cx = c.x, cy = c.y, cz = c.z, cw = c.w;
+        for (std::uint32_t r = 0; r < n; ++r) {
+            const float a = px[r] - cx, b = py[r] - cy, u = pz[r] - cz, v = pw[r] - cw;
+            const float d = alpha * (a * a + b * b) + u * u + v * v, old = q == 0 ? d : bd[r];
+            const bool closer = d < old;
+            best[r] = q == 0 ? 0.0f : (closer ? q : best[r]);
+            bd[r] = closer ? d : old;
+        }
+    }
+
     // Adaptive k-means (Alg. 1) over listed[first, last): the K-lobes appended, or none.
     bool kmeans(const std::vector<entry>& listed, std::uint32_t first, std::uint32_t last, const node& nd, const cluster_params<real>& cp, std::uint32_t salt) {
         const std::uint32_t n = last - first;
         const double dx = static_cast<double>(nd.x1) - static_cast<double>(nd.x0), dy = static_cast<double>(nd.y1) - static_cast<double>(nd.y0);
-        const double alpha = static_cast<double>(tau_) / std::max(1e-12, dx * dx + dy * dy);
-        // The members' (u, s) once, one array per coordinate (the seeding's loops over members
-        // vectorise); per member its nearest distance so far and that centre.
+        const float alpha = static_cast<float>(static_cast<double>(tau_) / std::max(1e-12, dx * dx + dy * dy));
+        // The members' (u, s) once, one array per coordinate, u from the node's corner: single
+        // precision, so the loops over members run 4 wide (an assignment may differ from double's
+        // only between centres within float rounding of equidistant, which either choice serves).
         scratch_.resize(7 * static_cast<std::size_t>(n));
-        double *px = scratch_.data(), *py = px + n, *pz = py + n, *pw = pz + n, *nearest = pw + n, *bd = nearest + n, *best = bd + n;
+        float *px = scratch_.data(), *py = px + n, *pz = py + n, *pw = pz + n, *nearest = pw + n, *bd = nearest + n, *best = bd + n;
         for (std::uint32_t r = 0; r < n; ++r) {
             const vec4& us = listed[first + r].el.us;
-            px[r] = us.x, py[r] = us.y, pz[r] = us.z, pw[r] = us.w;
+            px[r] = static_cast<float>(us.x - static_cast<real>(nd.x0)), py[r] = static_cast<float>(us.y - static_cast<real>(nd.y0)), pz[r] = static_cast<float>(us.z), pw[r] = static_cast<float>(us.w);
         }
-        const auto point = [&](std::uint32_t r) { return glm::dvec4(px[r], py[r], pz[r], pw[r]); };
-        const auto dist = [&](std::uint32_t r, const glm::dvec4& c) {
-            const double a = px[r] - c.x, b = py[r] - c.y, p = pz[r] - c.z, q = pw[r] - c.w;
+        const auto point = [&](std::uint32_t r) { return glm::vec4(px[r], py[r], pz[r], pw[r]); };
+        const auto dist = [&](std::uint32_t r, const glm::vec4& c) {
+            const float a = px[r] - c.x, b = py[r] - c.y, p = pz[r] - c.z, q = pw[r] - c.w;
             return alpha * (a * a + b * b) + p * p + q * q;
         };
-        std::vector<glm::dvec4>& centre = scratch_centres_;
+        std::vector<glm::vec4>& centre = scratch_centres_;
         std::vector<std::uint8_t>& assign = scratch_assign_;
         assign.assign(n, 0);
-        for (int C = 2; C <= cp.max_clusters; ++C) {
-            if (static_cast<std::uint32_t>(C) > n) break;
-            // k-means++ seeds.
-            centre.assign(static_cast<std::size_t>(C), glm::dvec4(0));
-            const auto pick = [&](std::uint32_t i) { return unit_from_bits<double>(pcg3d(glm::uvec3(salt, static_cast<std::uint32_t>(C), cp.seed * 977u + i)).x); };
-            centre[0] = point(std::min(n - 1, static_cast<std::uint32_t>(pick(0) * n)));
-            for (std::uint32_t r = 0; r < n; ++r) nearest[r] = dist(r, centre[0]);
-            for (int c = 1; c < C; ++c) {
+        // k-means++ seeds, drawn once for all C: C's are the first C (each trial's Lloyd steps
+        // start from a copy), with nearest[] the distance to the nearest seed so far.
+        std::array<glm::vec4, 8> seed{};
+        int seeded = 0;
+        const auto pick = [&](std::uint32_t i) { return unit_from_bits<double>(pcg3d(glm::uvec3(salt, cp.seed * 977u, i)).x); };
+        const auto add_seed = [&] {
+            std::uint32_t chosen = n - 1;
+            if (seeded == 0) {
+                chosen = std::min(n - 1, static_cast<std::uint32_t>(pick(0) * n));
+            } else {
                 double total = 0;
-                for (std::uint32_t r = 0; r < n; ++r) total += nearest[r];
-                double target = pick(static_cast<std::uint32_t>(c)) * total;
-                std::uint32_t chosen = n - 1;
+                for (std::uint32_t r = 0; r < n; ++r) total += static_cast<double>(nearest[r]);
+                double target = pick(static_cast<std::uint32_t>(seeded)) * total;
                 for (std::uint32_t r = 0; r < n; ++r) {
-                    target -= nearest[r];
+                    target -= static_cast<double>(nearest[r]);
                     if (target <= 0) {
                         chosen = r;
                         break;
                     }
                 }
-                const glm::dvec4 cc = centre[static_cast<std::size_t>(c)] = point(chosen);
-                for (std::uint32_t r = 0; r < n; ++r) nearest[r] = std::min(nearest[r], dist(r, cc));
             }
+            const glm::vec4 cc = seed[static_cast<std::size_t>(seeded++)] = point(chosen);
+            for (std::uint32_t r = 0; r < n; ++r) nearest[r] = seeded == 1 ? dist(r, cc) : std::min(nearest[r], dist(r, cc));
+        };
+        for (int C = 2; C <= cp.max_clusters; ++C) {
+            if (static_cast<std::uint32_t>(C) > n) break;
+            while (seeded < C) add_seed();
+            centre.assign(seed.begin(), seed.begin() + C);
             // Lloyd steps: ECN for the trial, then on to convergence for C*.
             const auto lloyd = [&](int iters) {
                 for (int it = 0; it < iters; ++it) {
                     bool changed = it == 0;
                     // The nearest centre, the first of equals (centre by centre over the members).
-                    const glm::dvec4 c0 = centre[0];
-                    for (std::uint32_t r = 0; r < n; ++r) bd[r] = dist(r, c0), best[r] = 0;
-                    for (int q = 1; q < C; ++q) {
-                        const glm::dvec4 cq = centre[static_cast<std::size_t>(q)];
-                        const double qd = q;  // the index as a double: one type in the loop (9% fewer instructions)
-                        for (std::uint32_t r = 0; r < n; ++r) {
-                            const double d = dist(r, cq);
-                            const bool closer = d < bd[r];
-                            bd[r] = closer ? d : bd[r];
-                            best[r] = closer ? qd : best[r];
-                        }
-                    }
+                    for (int q = 0; q < C; ++q) nearer(px, py, pz, pw, n, centre[static_cast<std::size_t>(q)], alpha, static_cast<float>(q), bd, best);
                     for (std::uint32_t r = 0; r < n; ++r) {
                         const auto b = static_cast<std::uint8_t>(best[r]);
                         changed |= assign[r] != b, assign[r] = b;
@@ -1276,11 +1306,11 @@ private:
                     std::array<glm::dvec4, 8> sum{};
                     std::array<double, 8> cnt{};
                     for (std::uint32_t r = 0; r < n; ++r) {
-                        sum[assign[r]] += point(r);
+                        sum[assign[r]] += glm::dvec4(point(r));
                         cnt[assign[r]] += 1;
                     }
                     for (int q = 0; q < C; ++q)
-                        if (cnt[static_cast<std::size_t>(q)] > 0) centre[static_cast<std::size_t>(q)] = sum[static_cast<std::size_t>(q)] / cnt[static_cast<std::size_t>(q)];
+                        if (cnt[static_cast<std::size_t>(q)] > 0) centre[static_cast<std::size_t>(q)] = glm::vec4(sum[static_cast<std::size_t>(q)] / cnt[static_cast<std::size_t>(q)]);
                 }
             };
             const auto cluster_moments = [&](std::array<moments, 8>& mo) {
@@ -1333,7 +1363,7 @@ private:
                 if (mo[i].mse() <= static_cast<double>(tau_)) {
                     klobes_.push_back(make_klobe(mo[i]));
                     ok = true;
-                } else if (last - first <= static_cast<std::uint32_t>(cp.max_node)) {
+                } else if (state[2 * i] == 1 && state[2 * i + 1] == 1 && last - first <= static_cast<std::uint32_t>(cp.max_node)) {
                     ok = kmeans(t.listed, first, last, nodes[i], cp, static_cast<std::uint32_t>(c * 1315423911u + i));
                 }
                 if (!ok) continue;
@@ -1632,8 +1662,8 @@ private:
     int run_levels_ = 0;
     lobe_set sample_set_, boundary_set_;
     std::vector<klobe> klobes_;
-    std::vector<glm::dvec4> scratch_centres_;
-    std::vector<double> scratch_;
+    std::vector<glm::vec4> scratch_centres_;
+    std::vector<float> scratch_;
     std::vector<std::uint8_t> scratch_assign_;
     build_report report_{};
 };

@@ -1263,6 +1263,25 @@ private:
         };
         std::vector<glm::vec4>& centre = scratch_centres_;
         std::vector<std::uint8_t>& assign = scratch_assign_;
+        // Two members whose normals lie more than sqrt(2 n tau) apart share no accepted cluster
+        // (its SSE would be at least half their squared distance, over n tau): with k such members
+        // pairwise (farthest-point picks) no C < k is accepted, so the trials start at k, and none
+        // run past MCN. The limit is rounded up 1e-3 for float's rounding: it only skips trials
+        // that fail.
+        const float limit = static_cast<float>(2.0 * n * static_cast<double>(tau_) * 1.001);
+        const auto normal_d2 = [&](std::uint32_t r, std::uint32_t q) {
+            const float a = pz[r] - pz[q], b = pw[r] - pw[q];
+            return a * a + b * b;
+        };
+        int apart = 1;
+        for (std::uint32_t r = 0; r < n; ++r) nearest[r] = normal_d2(r, 0);
+        while (apart <= cp.max_clusters) {
+            const std::uint32_t far = static_cast<std::uint32_t>(std::max_element(nearest, nearest + n) - nearest);
+            if (!(nearest[far] > limit)) break;
+            ++apart;
+            for (std::uint32_t r = 0; r < n; ++r) nearest[r] = std::min(nearest[r], normal_d2(r, far));
+        }
+        if (apart > cp.max_clusters) return false;
         assign.assign(n, 0);
         // k-means++ seeds, drawn once for all C: C's are the first C (each trial's Lloyd steps
         // start from a copy), with nearest[] the distance to the nearest seed so far.
@@ -1288,7 +1307,7 @@ private:
             const glm::vec4 cc = seed[static_cast<std::size_t>(seeded++)] = point(chosen);
             for (std::uint32_t r = 0; r < n; ++r) nearest[r] = seeded == 1 ? dist(r, cc) : std::min(nearest[r], dist(r, cc));
         };
-        for (int C = 2; C <= cp.max_clusters; ++C) {
+        for (int C = std::max(2, apart); C <= cp.max_clusters; ++C) {
             if (static_cast<std::uint32_t>(C) > n) break;
             while (seeded < C) add_seed();
             centre.assign(seed.begin(), seed.begin() + C);

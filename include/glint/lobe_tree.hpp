@@ -620,7 +620,7 @@ public:
     bool is_boundary(long i, long j) const noexcept {
         i = wrap(i, k_.width), j = wrap(j, k_.height);
         const std::size_t b = static_cast<std::size_t>(i + static_cast<long>(k_.width) * j);
-        return (boundary_bits_[b >> 6] >> (b & 63)) & 1u;
+        return boundary_bit(b);
     }
 
     std::size_t bytes() const noexcept {
@@ -676,7 +676,7 @@ public:
     const entry& seed(long i, long j) const noexcept {
         i = wrap(i, k_.width), j = wrap(j, k_.height);
         const std::uint32_t idx = static_cast<std::uint32_t>(i + static_cast<long>(k_.width) * j);
-        if ((boundary_bits_[idx >> 6] >> (idx & 63)) & 1u) {
+        if (boundary_bit(idx)) {
             const auto it = std::lower_bound(boundary_index_.begin(), boundary_index_.end(), idx);
             return boundary_lobes_[static_cast<std::size_t>(it - boundary_index_.begin())];
         }
@@ -703,6 +703,8 @@ private:
     };
 
     static long wrap(long i, long n) { return quilted_map::wrap(i, n); }
+    // Whether H's seed with linear index idx (i + width j, unwrapped) is a boundary seed.
+    bool boundary_bit(std::size_t idx) const noexcept { return (boundary_bits_[idx >> 6] >> (idx & 63)) & 1u; }
     static std::uint32_t leaves_p2(std::uint32_t count) {
         const std::uint32_t leaves = (count + 7) / 8;
         std::uint32_t p2 = 1;
@@ -937,7 +939,6 @@ private:
         const auto check_centre = [&](long x, long y) {
             const long xm = x == 0 ? W - 1 : x - 1, xp = x == W - 1 ? 0 : x + 1;
             const std::uint32_t c = row[x];
-            if (row[xm] + 1u == c && row[xp] == c + 1u && up[x] + 0x10000u == c && down[x] == c + 0x10000u) return;
             if (!tap_same(row[xm], c, -1, 0) || !tap_same(row[xp], c, 1, 0) || !tap_same(up[x], c, 0, -1) || !tap_same(down[x], c, 0, 1)) add_boundary(x, y);
         };
         const auto check = [&](long i, long j) {
@@ -1016,7 +1017,7 @@ private:
                         for (int dj = 0; dj < ept_; ++dj)
                             for (int di = 0; di < ept_; ++di) {
                                 const std::size_t idx = row + static_cast<std::size_t>(k_.width) * static_cast<std::size_t>(dj) + static_cast<std::size_t>(x * ept_ + di);  // in H: no wrap
-                                if ((boundary_bits_[idx >> 6] >> (idx & 63)) & 1u) return false;
+                                if (boundary_bit(idx)) return false;
                             }
                         return true;
                     };
@@ -1554,7 +1555,7 @@ private:
                         if (i >= k_.width) i -= k_.width;
                         if (j >= k_.height) j -= k_.height;
                         const std::size_t idx = static_cast<std::size_t>(i + static_cast<long>(k_.width) * j);
-                        if ((boundary_bits_[idx >> 6] >> (idx & 63)) & 1u) return;
+                        if (boundary_bit(idx)) return;
                     }
                     ++st.lobes;
                     sum += term(e.el, u, f, s, k_);

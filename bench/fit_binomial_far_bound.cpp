@@ -4,12 +4,14 @@
 //            the correction grows like -0.75 log(N - 3)),
 //   columns: x = log2(p) + 20 p uniform from -20 to 9 (p from 9.5e-7 to 1/2; steps of 0.72 in
 //            log2 p where p is small and the correction follows log p, of 0.03 in p near 1/2),
-// it takes the one-sided fit (t, sigma) of the middle's offset (mean m, variance v,
-// glint_binomial_one_sided_fit) and solves, in double by damped Newton steps on the closed-form
+// it takes the one-sided fit (t, sigma) of the middle's offset (mean m, variance v), solved
+// exactly (bench/clamped_gaussian.hpp), and solves, in double by damped Newton steps on the closed-form
 // moments of the capped offset (glint_capped_offset_moments), for the (t', sigma') that give
 // min(sigma' max(t' + Z, 0), N - 2) the same m and v, starting from the solution of the node
-// above (continuation from N = 32 down). The node stores (t', log(sigma' / sqrt(v))), blended
-// into the one-sided fit's (t, log(sigma / sqrt(v))) from N = 26 to 32. At N = 3 itself (span 1) the fit is degenerate: row 0 holds the solution
+// above (continuation from N = 32 down). The node stores (t', log(sigma' / sqrt(lambda))),
+// lambda = N p (so that the sampler needs neither the ends nor m and v), blended into the one-sided
+// fit's (t, log(sigma / sqrt(lambda))) from N = 26 to 32, where GLINT_BINOMIAL_MIDDLE_TABLE
+// (bench/fit_binomial_middle_table.cpp, the same exact one-sided fit) takes over. At N = 3 itself (span 1) the fit is degenerate: row 0 holds the solution
 // at N = 3 + 1e-5.
 //
 // It then measures what the kernel's interpolation (cubic Lagrange in both axes on a 4 x 4
@@ -25,6 +27,8 @@
 #include <vector>
 
 #include <glint/binomial.hpp>
+
+#include "clamped_gaussian.hpp"
 
 namespace {
 
@@ -54,7 +58,7 @@ struct problem {
 problem problem_at(double N, double p) {
     const auto e = K::glint_binomial_unbiased_ends(N, p, K::GLINT_POW_LOG1P);
     const auto g = K::glint_binomial_middle_targets(N, p, e);
-    return {N - 2, g.mean, g.variance + g.mean * g.mean, K::glint_binomial_one_sided_fit(g)};
+    return {N - 2, g.mean, g.variance + g.mean * g.mean, glint_bench::one_sided_exact(g.mean, g.variance)};
 }
 
 // Damped Newton on (mu, sigma) from (t, sigma) as given; whether it converged.
@@ -119,9 +123,9 @@ int main(int argc, char** argv) {
             // N = 32 on (there the far bound removes less than 1e-8 of the mean): the law is
             // continuous where the table ends.
             const double u = std::fmin(std::fmax((N - 26) / 6, 0.0), 1.0), fit_share = u * u * (3 - 2 * u);
-            const double sd = std::sqrt(q.second - q.mean * q.mean);
+            const double root = std::sqrt(N * p);
             table[at] = (1 - fit_share) * t + fit_share * q.fit.x;
-            table[at + 1] = (1 - fit_share) * std::log(sigma / sd) + fit_share * std::log(q.fit.y / sd);
+            table[at + 1] = (1 - fit_share) * std::log(sigma / root) + fit_share * std::log(q.fit.y / root);
         }
     if (!errors_only) {
         std::printf("GLINT_FLOAT_TABLE(GLINT_BINOMIAL_FAR_TABLE, %d) GLINT_TABLE_OPEN\n", floats);
@@ -152,7 +156,7 @@ int main(int argc, char** argv) {
             if (!(N > n_min)) continue;
             const problem q = problem_at(N, p);
             const glm::dvec2 c = lookup(N, p);
-            const double t = c.x, sigma = std::sqrt(q.second - q.mean * q.mean) * std::exp(c.y);
+            const double t = c.x, sigma = std::sqrt(N * p) * std::exp(c.y);
             const auto m = K::glint_capped_offset_moments(t, sigma, q.span);
             const double w = std::fmin(N - 3, 1.0), var_target = q.second - q.mean * q.mean;
             const double e_mean = w * std::fabs(m.mean / q.mean - 1);

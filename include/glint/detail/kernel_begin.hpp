@@ -24,6 +24,9 @@ using namespace glm;  // NOLINT: confined to glint::detail::glsl
 
 // A kernel function: a static member of the kernels class template (in GLSL: nothing).
 #define GLINT_FN static
+// A kernel function kept out of line in C++ (in GLSL: as GLINT_FN): for a rarely taken, long path
+// whose inlined code would slow its callers' common paths.
+#define GLINT_FN_OUT_OF_LINE __attribute__((noinline)) static
 // An out-parameter (in GLSL: `out T`).
 #define GLINT_OUT(T) T&
 // An in-out parameter (in GLSL: `inout T`).

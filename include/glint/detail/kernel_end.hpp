@@ -1,6 +1,7 @@
 // glint: C++ side of the single-source kernel compat layer, closing half.
 // Removes every macro kernel_begin.hpp defined.
 #undef GLINT_FN
+#undef GLINT_FN_OUT_OF_LINE
 #undef GLINT_OUT
 #undef GLINT_INOUT
 #undef GLINT_CONST

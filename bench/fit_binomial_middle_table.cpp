@@ -1,7 +1,7 @@
 // Reproduces GLINT_BINOMIAL_MIDDLE_TABLE (kernels/binomial.glsl): the mean-preserving sampler's
-// middle part for N >= 32 and lambda = N p_near from 2^-7 to 40, where its parameters used to
+// middle part for N >= 32 and lambda = N p_near from 2^-7 to 17, where its parameters used to
 // cost a log1p, two exps and a log per draw. At every node (lambda, r) of a 128 x 13 grid,
-//   rows:    log2(lambda) uniform from -7 to log2(40),
+//   rows:    log2(lambda) uniform from -7 to log2(17),
 //   columns: r = p_near / p_max(lambda) uniform from 0 to 1, with p_max(lambda) =
 //            (1 - (1 - min(lambda / 16, 1))^3) / 2: at least min(lambda / 32, 1/2), so that the
 //            columns cover every p_near with N >= 32, and twice differentiable in lambda (a kink
@@ -32,7 +32,7 @@ using K = glint::detail::glsl::kernels<double>;
 
 constexpr int rows = 128, columns = 13;
 constexpr double x_min = -7;
-const double x_max = std::log2(40.0);
+const double x_max = std::log2(17.0);
 const double x_step = (x_max - x_min) / (rows - 1);
 
 double p_max(double lambda) {

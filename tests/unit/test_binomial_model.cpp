@@ -180,7 +180,7 @@ std::pair<double, double> middle_table_errors(bool closed_form_everywhere) {
             const double p = r * std::min(0.5, lambda / 32), N = lambda / p;
             const auto e = K::glint_binomial_unbiased_ends(N, p, K::GLINT_POW_LOG1P);
             const auto g = K::glint_binomial_middle_targets(N, p, e);
-            glm::dvec2 f = K::glint_binomial_middle_fit(N, p);
+            glm::dvec2 f = glm::dvec2(K::glint_binomial_middle_fit(N, p));
             if (closed_form_everywhere) {
                 const double sd = std::sqrt(lambda * (1 - p));
                 f = glm::dvec2((lambda - 1) / sd, sd);

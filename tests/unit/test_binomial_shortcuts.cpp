@@ -61,9 +61,13 @@ std::vector<real> u1_values(real N, real p, int method) {
     std::vector<real> thresholds;
     const real q = std::min(p, real(1) - p), N2 = std::max(real(2), N);
     const real bound = N * q * real(1.001) + real(1e-5);
+    // The mean-preserving sampler's bounds on the ends, 1.001 / (1 + x + x^2 / 2 + x^3 / 6).
+    const real x_pos = real(0.999) * N * (real(1) - p), x_neg = real(0.999) * N * p;
+    auto cubic = [](real x) { return real(1) + x * (real(1) + x * (real(0.5) + x * real(1.0 / 6.0))); };
     thresholds.insert(thresholds.end(), {bound, real(1) - bound, real(1.001) / (real(1) + real(0.999) * N * (real(1) - p)),
                                          real(1) - real(1e-6) - real(1.001) / (real(1) + real(0.999) * N * p), std::pow(p, N2),
-                                         real(1) - K<real>::glint_pow_one_minus(p, N2, method)});
+                                         real(1) - K<real>::glint_pow_one_minus(p, N2, method), real(1.001) / cubic(x_pos),
+                                         real(1) - real(1e-6) - real(1.001) / cubic(x_neg)});
     const auto e = K<real>::glint_binomial_unbiased_ends_evaluated(N2, p, method);
     thresholds.insert(thresholds.end(), {e.all_positive, real(1) - e.all_negative});
     std::vector<real> us = {real(1), real(0x1p-24), real(1) - real(0x1p-24), real(0.5)};

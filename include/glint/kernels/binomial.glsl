@@ -1385,11 +1385,13 @@ GLINT_FN bool glint_binomial_middle_tabulated(real N, real p_near) {
 // No transcendental but a sqrt.
 GLINT_CONST(real) GLINT_BINOMIAL_BUSY_LAMBDA = real(17);
 
-GLINT_FN vec2 glint_binomial_busy_fit(real lambda, real p_near) {
+// Returns (t, sigma, sigma t): the Gaussian's centre sigma t is m itself where t = m / sd, which
+// spares the sampler both divisions (it reads only the centre and sigma).
+GLINT_FN vec3 glint_binomial_busy_fit(real lambda, real p_near) {
     real m = lambda - real(1);
     real sd = sqrt(lambda * (real(1) - p_near));
+    if (real(6) * sd <= m) return vec3(m / sd, sd, m);
     real w = sd / m;
-    if (w <= real(1.0 / 6.0)) return vec2(m / sd, sd);
     real s = (w - real(0.21333333333333332)) * real(21.428571428571423);
     real a = real(-1.8128214285233975e-07);
     a = real(-4.3788862613105279e-06) + s * a;
@@ -1405,20 +1407,23 @@ GLINT_FN vec2 glint_binomial_busy_fit(real lambda, real p_near) {
     b = real(1.4453165524159861e-05) + s * b;
     b = real(6.6059204968274304e-06) + s * b;
     b = real(1.0000013312348952) + s * b;
-    return vec2(a / w, sd * b);
+    real t = a / w, sigma = sd * b;
+    return vec3(t, sigma, sigma * t);
 }
 
-// (t, sigma) of the middle where glint_binomial_middle_tabulated: the far bound's table below N = 32,
-// then the middle's table up to lambda = 17, then glint_binomial_busy_fit.
-GLINT_FN vec2 glint_binomial_middle_fit(real N, real p_near) {
+// (t, sigma, sigma t) of the middle where glint_binomial_middle_tabulated: the far bound's table
+// below N = 32, then the middle's table up to lambda = 17, then glint_binomial_busy_fit.
+GLINT_FN vec3 glint_binomial_middle_fit(real N, real p_near) {
     real lambda = N * p_near;
     if (N < GLINT_BINOMIAL_FAR_N_MAX) {
         vec2 f = glint_binomial_two_sided_fit(N, p_near);
-        return vec2(f.x, sqrt(lambda) * exp(f.y));
+        real sigma = sqrt(lambda) * exp(f.y);
+        return vec3(f.x, sigma, sigma * f.x);
     }
     if (lambda >= GLINT_BINOMIAL_BUSY_LAMBDA) return glint_binomial_busy_fit(lambda, p_near);
     vec2 f = glint_binomial_middle_table(lambda, p_near);
-    return vec2(f.x, sqrt(lambda) * f.y);
+    real sigma = sqrt(lambda) * f.y;
+    return vec3(f.x, sigma, sigma * f.x);
 }
 
 // The middle's parameters where glint_binomial_middle_tabulated, without the ends (all_positive
@@ -1430,10 +1435,10 @@ GLINT_FN glint_binomial_middle glint_binomial_tabulated_middle(real N, real p) {
     q.lower = (p <= real(0.5)) ? real(1) : real(0);
     q.span = N - real(2);
     q.two_point = real(0);
-    vec2 f = glint_binomial_middle_fit(N, (q.lower > real(0.5)) ? p : real(1) - p);
+    vec3 f = glint_binomial_middle_fit(N, (q.lower > real(0.5)) ? p : real(1) - p);
     q.t = f.x;
     q.sigma = f.y;
-    q.center = (q.lower > real(0.5)) ? real(1) + q.sigma * q.t : (N - real(1)) - q.sigma * q.t;
+    q.center = (q.lower > real(0.5)) ? real(1) + f.z : (N - real(1)) - f.z;
     return q;
 }
 
@@ -1524,12 +1529,15 @@ GLINT_FN glint_binomial glint_binomial_unbiased(real N, real p, real u1, real u2
     p = clamp(p, real(0), real(1));
     if (glint_binomial_surely_near_end(N, p, u1, method)) return glint_binomial_near_end(N, p);
     if (N <= real(2)) return glint_binomial_unbiased_small(N, p, u1);
-    // Where u1 is surely above p^N and below 1 - (1 - p)^N (the bounds of
-    // glint_binomial_dual_gated), no gate fires, and where the middle's parameters come from a
-    // table or the closed form, the ends are not needed at all.
+    // Where u1 is surely above p^N and below 1 - (1 - p)^N, no gate fires, and where the middle's
+    // parameters come from a table or the closed form, the ends are not needed at all. The bounds
+    // are glint_binomial_dual_gated's with exp(-x) <= 1 / (1 + x + x^2 / 2 + x^3 / 6) for
+    // (1 - q)^N <= exp(-N q) in place of 1 / (1 + x): at N q = 10, 0.4% of the draws left to
+    // decide from the ends instead of 9%.
     if (method != GLINT_POW_NAIVE && glint_binomial_middle_tabulated(N, min(p, real(1) - p))) {
-        bool above_all_positive = u1 * (real(1) + real(0.999) * N * (real(1) - p)) >= real(1.001);
-        bool below_all_negative = (real(1) - u1 - real(1e-6)) * (real(1) + real(0.999) * N * p) >= real(1.001);
+        real x_pos = real(0.999) * N * (real(1) - p), x_neg = real(0.999) * N * p;
+        bool above_all_positive = u1 * (real(1) + x_pos * (real(1) + x_pos * (real(0.5) + x_pos * real(1.0 / 6.0)))) >= real(1.001);
+        bool below_all_negative = (real(1) - u1 - real(1e-6)) * (real(1) + x_neg * (real(1) + x_neg * (real(0.5) + x_neg * real(1.0 / 6.0)))) >= real(1.001);
         if (above_all_positive && below_all_negative) {
             real G = glint_binomial_unbiased_middle(glint_binomial_tabulated_middle(N, p), N, u2);
             return glint_binomial_pair(G, N - G);

@@ -49,11 +49,23 @@
 // 3. The far bound. Capping the offset at N - 2 lowers its mean by sigma psi(t - (N - 2)/sigma),
 //    which matters for N below about 30. There the sampler uses the two-sided fit: (t', sigma')
 //    such that min(sigma' max(t' + Z, 0), N - 2) has mean m and variance v. It is solved once,
-//    offline, by Newton's method on the capped moments' closed form, and stored as a correction
-//    of the one-sided fit on a 41 x 41 grid over (N, p) (bench/fit_binomial_far_bound.cpp), read
-//    by cubic interpolation: no iteration at run time (glint_binomial_far_correction). The table
-//    leaves E[n] within 2.0e-5 of N p (relative) between its nodes, 8.7e-7 at the grid points of
-//    docs/binomial.md; the offset's variance within 1.7e-4.
+//    offline, by Newton's method on the capped moments' closed form, and stored on a 41 x 41 grid
+//    over (N, p) (bench/fit_binomial_far_bound.cpp), read by cubic interpolation: no iteration at
+//    run time (glint_binomial_two_sided_fit). The table leaves E[n] within 2.9e-5 of N p
+//    (relative) between its nodes; the offset's mean within 1.1e-4 and its variance within
+//    2.2e-4 of their targets.
+// 4. Without the ends. The parameters depend on (N, p) alone, so where they are tabulated or in
+//    closed form the sampler does not need P(n = 0) and P(n = N) for them, only for the gates,
+//    and skips those too where u1 is surely between them (glint_binomial_middle_fit):
+//    - N from 4 to 32: the far bound's table, scaled by sqrt(N p_near);
+//    - N >= 32, lambda = N p_near from 2^-7 to 17: a 128 x 13 table of the exact one-sided fit
+//      over (log2 lambda, p_near) (bench/fit_binomial_middle_table.cpp; the middle's mean within
+//      9.5e-6 of its target between the nodes, its variance within 3.0e-5);
+//    - lambda >= 17: the ends weigh less than exp(-17) = 4.1e-8, m = lambda - 1 and
+//      v = lambda (1 - p_near), and (t, sigma) come from w = sqrt(v) / m by two degree-6
+//      polynomials (t = m / sd, sigma = sd where w <= 1/6).
+//    Below lambda = 2^-7 (N >= 32) and below N = 4 the moments are computed from the ends as in
+//    steps 1 and 2.
 // The overall mean is then N p^N + P(M) (1 + m) = N p up to those errors and the rounding of the
 // closed forms (about one ulp of N p). Measured figures: docs/binomial.md.
 //
@@ -61,12 +73,15 @@
 // change the result, and return bit for bit what the straight-line evaluation returns (for u1 a
 // normal number; tests/unit/test_binomial_shortcuts.cpp): for N > 2 and methods kk25 and log1p,
 // u1 beyond N min(p, 1 - p) 1.001 + 1e-5 decides the near-end gate (n = 0, or n = N for
-// p > 1/2) from Bernoulli's inequality; the dual-gated middle needs no gate where u1 is surely
-// between p^N and 1 - (1 - p)^N (bounded by 1 / (1 + N q)); the mean-preserving sampler's end
-// probabilities are taken as 0 where they fall below the normal range; N <= 2 needs no
-// transcendental at all. Sparse glints (N p << 1), the common case, then cost two comparisons.
-// Where the middle is drawn, its setup (the moments, the fit, the table) has a fixed cost: a
-// log, an exp, two polynomials and, for N < 32, two log2 and a 4 x 4 table read.
+// p > 1/2) from Bernoulli's inequality; the middle needs no gate where u1 is surely between p^N
+// and 1 - (1 - p)^N (bounded by 1 / (1 + x) with x = N q for Alg. 1, by 1 / (1 + x + x^2 / 2 +
+// x^3 / 6) for the mean-preserving sampler); the mean-preserving sampler's end probabilities are
+// taken as 0 where they fall below the normal range; N <= 2 needs no transcendental at all.
+// Sparse glints (N p << 1), the common case, then cost two comparisons. Where the middle is
+// drawn, its setup (step 4) costs a table read (a log2 and 16 node pairs), or a sqrt and two
+// polynomials from N p = 17 on; below N = 4 and N p = 2^-7 the moments, a log and an exp. The
+// table reads are out of line in C++: inlined, they slowed the sampler's other paths. Measured
+// against Alg. 1 and std::binomial_distribution: docs/binomial.md.
 #pragma once
 
 #include "glint/core.hpp"

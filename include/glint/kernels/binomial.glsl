@@ -877,7 +877,8 @@ GLINT_TABLE_CLOSE;
 // p_near with N >= 32 and is twice differentiable in lambda (min(lambda / 32, 1/2), with its kink,
 // left the interpolation 10x less accurate). From lambda = 17 on, glint_binomial_busy_fit needs no
 // table. The digits come from bench/fit_binomial_middle_table.cpp, which measures what the
-// interpolation leaves (printed with the table). It spares the log1p and exp of the ends and the
+// interpolation leaves: the middle's mean within 9.5e-6 and its variance within 3.0e-5 of their
+// targets, E[n] within 9.0e-6 of N p (relative). It spares the log1p and exp of the ends and the
 // log and exp of the polynomial fit.
 GLINT_CONST(real) GLINT_BINOMIAL_MIDDLE_X_MIN = real(-7);
 GLINT_CONST(real) GLINT_BINOMIAL_MIDDLE_LAMBDA_MIN = real(0.0078125);       // 2^-7

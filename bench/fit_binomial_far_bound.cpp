@@ -5,7 +5,7 @@
 //   columns: x = log2(p) + 20 p uniform from -20 to 9 (p from 9.5e-7 to 1/2; steps of 0.72 in
 //            log2 p where p is small and the correction follows log p, of 0.03 in p near 1/2),
 // it takes the one-sided fit (t, sigma) of the middle's offset (mean m, variance v), solved
-// exactly (bench/clamped_gaussian.hpp), and solves, in double by damped Newton steps on the closed-form
+// exactly (bench/binomial_fit.hpp), and solves, in double by damped Newton steps on the closed-form
 // moments of the capped offset (glint_capped_offset_moments), for the (t', sigma') that give
 // min(sigma' max(t' + Z, 0), N - 2) the same m and v, starting from the solution of the node
 // above (continuation from N = 32 down). The node stores (t', log(sigma' / sqrt(lambda))),
@@ -28,7 +28,7 @@
 
 #include <glint/binomial.hpp>
 
-#include "clamped_gaussian.hpp"
+#include "binomial_fit.hpp"
 
 namespace {
 
@@ -127,27 +127,9 @@ int main(int argc, char** argv) {
             table[at] = (1 - fit_share) * t + fit_share * q.fit.x;
             table[at + 1] = (1 - fit_share) * std::log(sigma / root) + fit_share * std::log(q.fit.y / root);
         }
-    if (!errors_only) {
-        std::printf("GLINT_FLOAT_TABLE(GLINT_BINOMIAL_FAR_TABLE, %d) GLINT_TABLE_OPEN\n", floats);
-        for (int k = 0; k < floats; k += 4) {
-            auto f = [&](int d) { return static_cast<double>(static_cast<float>(table[static_cast<std::size_t>(k + d)])); };
-            std::printf("%sGLINT_FLOAT4(%.8ef, %.8ef, %.8ef, %.8ef)%s", k % 8 == 0 ? "    " : " ", f(0), f(1), f(2), f(3),
-                        k + 4 == floats ? "\n" : (k % 8 == 4 ? ",\n" : ","));
-        }
-        std::printf("GLINT_TABLE_CLOSE;\n");
-    }
-    // The kernel's lookup (glint_binomial_far_correction), in double on the float table.
-    auto lookup = [&](double N, double p) {
-        const double fn = std::fmin(std::fmax(row_of_n(N), 0.0), rows - 1), fx = std::fmin(std::fmax((x_of_p(p) - x_min) / x_step, 0.0), columns - 1);
-        const int i = std::min(std::max(static_cast<int>(fn) - 1, 0), rows - 4), j = std::min(std::max(static_cast<int>(fx) - 1, 0), columns - 4);
-        const glm::dvec4 wr = K::glint_cubic_weights(fn - i - 1), wc = K::glint_cubic_weights(fx - j - 1);
-        glm::dvec2 c(0);
-        for (int a = 0; a < 4; ++a)
-            for (int b = 0; b < 4; ++b)
-                for (int k = 0; k < 2; ++k)
-                    c[k] += wr[a] * wc[b] * static_cast<double>(static_cast<float>(table[static_cast<std::size_t>(2 * ((i + a) * columns + j + b) + k)]));
-        return c;
-    };
+    if (!errors_only) glint_bench::print_table("GLINT_BINOMIAL_FAR_TABLE", table);
+    // The kernel's lookup (glint_binomial_two_sided_fit), in double on the float table.
+    auto lookup = [&](double N, double p) { return glint_bench::table_lookup(table, rows, columns, row_of_n(N), (x_of_p(p) - x_min) / x_step); };
     double worst_mean = 0, worst_var = 0, worst_total = 0;
     glm::dvec2 at_mean(0), at_var(0), at_total(0);
     for (double row = 0.01; row < rows - 1; row += 1 / 7.3)

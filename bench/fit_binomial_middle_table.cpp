@@ -6,7 +6,7 @@
 //            (1 - (1 - min(lambda / 16, 1))^3) / 2: at least min(lambda / 32, 1/2), so that the
 //            columns cover every p_near with N >= 32, and twice differentiable in lambda (a kink
 //            there, as min(lambda / 32, 1/2) has, costs the cubic interpolation 10x in accuracy),
-// it solves the one-sided fit exactly (bisection in double, bench/clamped_gaussian.hpp) for the
+// it solves the one-sided fit exactly (bisection in double, bench/binomial_fit.hpp) for the
 // middle's target moments m, v (glint_binomial_middle_targets, from the exact ends), and stores
 // (t, sigma / sqrt(lambda)) (linear: no exp per draw; log(sigma / sqrt(lambda)) was 1.6x as
 // accurate). Column 0 (p_near -> 0, the Poisson limit) is evaluated at
@@ -24,7 +24,7 @@
 
 #include <glint/binomial.hpp>
 
-#include "clamped_gaussian.hpp"
+#include "binomial_fit.hpp"
 
 namespace {
 
@@ -66,27 +66,10 @@ int main(int argc, char** argv) {
             table[static_cast<std::size_t>(2 * (i * columns + j))] = f.x;
             table[static_cast<std::size_t>(2 * (i * columns + j) + 1)] = f.y / std::sqrt(lambda);
         }
-    if (!errors_only) {
-        std::printf("GLINT_FLOAT_TABLE(GLINT_BINOMIAL_MIDDLE_TABLE, %d) GLINT_TABLE_OPEN\n", floats);
-        for (int k = 0; k < floats; k += 4) {
-            auto f = [&](int d) { return static_cast<double>(static_cast<float>(table[static_cast<std::size_t>(k + d)])); };
-            std::printf("%sGLINT_FLOAT4(%.8ef, %.8ef, %.8ef, %.8ef)%s", k % 8 == 0 ? "    " : " ", f(0), f(1), f(2), f(3),
-                        k + 4 == floats ? "\n" : (k % 8 == 4 ? ",\n" : ","));
-        }
-        std::printf("GLINT_TABLE_CLOSE;\n");
-    }
+    if (!errors_only) glint_bench::print_table("GLINT_BINOMIAL_MIDDLE_TABLE", table);
     // The kernel's lookup (glint_binomial_middle_table), in double on the float table.
     auto lookup = [&](double lambda, double p) {
-        const double fx = std::fmin(std::fmax((std::log2(lambda) - x_min) / x_step, 0.0), rows - 1);
-        const double fr = std::fmin(std::fmax(p / p_max(lambda) * (columns - 1), 0.0), columns - 1);
-        const int i = std::min(std::max(static_cast<int>(fx) - 1, 0), rows - 4), j = std::min(std::max(static_cast<int>(fr) - 1, 0), columns - 4);
-        const glm::dvec4 wr = K::glint_cubic_weights(fx - i - 1), wc = K::glint_cubic_weights(fr - j - 1);
-        glm::dvec2 c(0);
-        for (int a = 0; a < 4; ++a)
-            for (int b = 0; b < 4; ++b)
-                for (int k = 0; k < 2; ++k)
-                    c[k] += wr[a] * wc[b] * static_cast<double>(static_cast<float>(table[static_cast<std::size_t>(2 * ((i + a) * columns + j + b) + k)]));
-        return c;
+        return glint_bench::table_lookup(table, rows, columns, (std::log2(lambda) - x_min) / x_step, p / p_max(lambda) * (columns - 1));
     };
     double worst_mean = 0, worst_var = 0, worst_total = 0;
     glm::dvec2 at_mean(0), at_var(0), at_total(0);

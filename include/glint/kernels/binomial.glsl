@@ -423,8 +423,9 @@ GLINT_FN vec2 glint_binomial_one_sided_fit(glint_binomial_targets g) {
 
 // The two-sided fit for 3 <= N <= 32, where the far bound matters (glint/binomial.hpp, step 3),
 // in constant time: (t', log(sigma' / sqrt(lambda))), lambda = N p_near, such that
-// min(sigma' max(t' + Z, 0), N - 2) has mean m and variance v, tabulated on a 41 x 41 grid and read by cubic Lagrange interpolation in
-// both axes (a 4 x 4 stencil, centred except in the edge cells). Rows: ((N - 3) / 29)^(1/4)
+// min(sigma' max(t' + Z, 0), N - 2) has mean m and variance v, tabulated on a 41 x 41 grid and
+// read by cubic Lagrange interpolation in both axes (a 4 x 4 stencil, centred except in the edge
+// cells). Rows: ((N - 3) / 29)^(1/4)
 // uniform from 0 to 1 (dense near N = 3, where sigma' grows without bound as the middle tends to
 // the two-point law). Columns: x = log2(p_near) + 20 p_near uniform from -20 to 9 (p_near from
 // 9.5e-7 to 1/2: steps of 0.72 in log2 p where p is small, where the far bound's effect follows
@@ -1345,12 +1346,10 @@ GLINT_FN vec2 glint_binomial_middle_node(int k) {
     return vec2(real(GLINT_TABLE_READ(GLINT_BINOMIAL_MIDDLE_TABLE, k)), real(GLINT_TABLE_READ(GLINT_BINOMIAL_MIDDLE_TABLE, k + 1)));
 }
 
-// Summed in pairs, which shortens the chain of dependent additions (the lookup's latency is most of
-// its cost).
 GLINT_FN vec2 glint_binomial_middle_row(int i, int j, vec4 w) {
     int k = 2 * (i * GLINT_BINOMIAL_MIDDLE_COLUMNS + j);
-    return (w.x * glint_binomial_middle_node(k) + w.y * glint_binomial_middle_node(k + 2)) +
-           (w.z * glint_binomial_middle_node(k + 4) + w.w * glint_binomial_middle_node(k + 6));
+    return w.x * glint_binomial_middle_node(k) + w.y * glint_binomial_middle_node(k + 2) + w.z * glint_binomial_middle_node(k + 4) +
+           w.w * glint_binomial_middle_node(k + 6);
 }
 
 // GLINT_BINOMIAL_MIDDLE_TABLE at (lambda, p_near): (t, sigma / sqrt(lambda)). Out of line in C++,
@@ -1366,8 +1365,8 @@ GLINT_FN_OUT_OF_LINE vec2 glint_binomial_middle_table(real lambda, real p_near) 
     int j = clamp(int(fr) - 1, 0, GLINT_BINOMIAL_MIDDLE_COLUMNS - 4);
     vec4 wr = glint_cubic_weights(fx - real(i) - real(1));
     vec4 wc = glint_cubic_weights(fr - real(j) - real(1));
-    return (wr.x * glint_binomial_middle_row(i, j, wc) + wr.y * glint_binomial_middle_row(i + 1, j, wc)) +
-           (wr.z * glint_binomial_middle_row(i + 2, j, wc) + wr.w * glint_binomial_middle_row(i + 3, j, wc));
+    return wr.x * glint_binomial_middle_row(i, j, wc) + wr.y * glint_binomial_middle_row(i + 1, j, wc) +
+           wr.z * glint_binomial_middle_row(i + 2, j, wc) + wr.w * glint_binomial_middle_row(i + 3, j, wc);
 }
 
 // Whether the middle's (t, sigma) come without the ends (glint_binomial_middle_fit): N >= 4 (up to
@@ -1504,6 +1503,11 @@ GLINT_FN real glint_binomial_unbiased_middle(glint_binomial_middle q, real N2, r
     return (q.lower > real(0.5)) ? real(1) + offset : (N2 - real(1)) - offset;
 }
 
+// 1 + x + x^2 / 2 + x^3 / 6 <= exp(x) for x >= 0: its reciprocal bounds exp(-x) from above.
+GLINT_FN real glint_binomial_exp_taylor3(real x) {
+    return real(1) + x * (real(1) + x * (real(0.5) + x * real(1.0 / 6.0)));
+}
+
 // The mean-preserving sampler for N <= 2 (the caller clamps N and p): KK25 Alg. 1's gates alone,
 // exact, without a transcendental.
 GLINT_FN glint_binomial glint_binomial_unbiased_small(real N, real p, real u1) {
@@ -1536,9 +1540,8 @@ GLINT_FN glint_binomial glint_binomial_unbiased(real N, real p, real u1, real u2
     // (1 - q)^N <= exp(-N q) in place of 1 / (1 + x): at N q = 10, 0.4% of the draws left to
     // decide from the ends instead of 9%.
     if (method != GLINT_POW_NAIVE && glint_binomial_middle_tabulated(N, min(p, real(1) - p))) {
-        real x_pos = real(0.999) * N * (real(1) - p), x_neg = real(0.999) * N * p;
-        bool above_all_positive = u1 * (real(1) + x_pos * (real(1) + x_pos * (real(0.5) + x_pos * real(1.0 / 6.0)))) >= real(1.001);
-        bool below_all_negative = (real(1) - u1 - real(1e-6)) * (real(1) + x_neg * (real(1) + x_neg * (real(0.5) + x_neg * real(1.0 / 6.0)))) >= real(1.001);
+        bool above_all_positive = u1 * glint_binomial_exp_taylor3(real(0.999) * N * (real(1) - p)) >= real(1.001);
+        bool below_all_negative = (real(1) - u1 - real(1e-6)) * glint_binomial_exp_taylor3(real(0.999) * N * p) >= real(1.001);
         if (above_all_positive && below_all_negative) {
             real G = glint_binomial_unbiased_middle(glint_binomial_tabulated_middle(N, p), N, u2);
             return glint_binomial_pair(G, N - G);

@@ -10,8 +10,8 @@
 // min(sigma' max(t' + Z, 0), N - 2) the same m and v, starting from the solution of the node
 // above (continuation from N = 32 down). The node stores (t', log(sigma' / sqrt(lambda))),
 // lambda = N p (so that the sampler needs neither the ends nor m and v), blended into the one-sided
-// fit's (t, log(sigma / sqrt(lambda))) from N = 26 to 32, where GLINT_BINOMIAL_MIDDLE_TABLE
-// (bench/fit_binomial_middle_table.cpp, the same exact one-sided fit) takes over. At N = 3 itself (span 1) the fit is degenerate: row 0 holds the solution
+// fit's (t, log(sigma / sqrt(lambda))) from N = 26 to 32, where the one-sided fit takes over.
+// At N = 3 itself (span 1) the fit is degenerate: row 0 holds the solution
 // at N = 3 + 1e-5.
 //
 // It then measures what the kernel's interpolation (cubic Lagrange in both axes on a 4 x 4

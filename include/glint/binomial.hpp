@@ -58,14 +58,12 @@
 //    closed form the sampler does not need P(n = 0) and P(n = N) for them, only for the gates,
 //    and skips those too where u1 is surely between them (glint_binomial_middle_fit):
 //    - N from 4 to 32: the far bound's table, scaled by sqrt(N p_near);
-//    - N >= 32, lambda = N p_near from 2^-7 to 17: a 128 x 13 table of the exact one-sided fit
-//      over (log2 lambda, p_near) (bench/fit_binomial_middle_table.cpp; the middle's mean within
-//      9.5e-6 of its target between the nodes, its variance within 3.0e-5);
-//    - lambda >= 17: the ends weigh less than exp(-17) = 4.1e-8, m = lambda - 1 and
+//    - lambda = N p_near >= 17: the ends weigh less than exp(-17) = 4.1e-8, m = lambda - 1 and
 //      v = lambda (1 - p_near), and (t, sigma) come from w = sqrt(v) / m by two degree-6
 //      polynomials (t = m / sd, sigma = sd where w <= 1/6).
-//    Below lambda = 2^-7 (N >= 32) and below N = 4 the moments are computed from the ends as in
-//    steps 1 and 2.
+//    Elsewhere (N below 4, or N >= 32 with lambda below 17) the moments are computed from the ends
+//    as in steps 1 and 2. (A table for N >= 32 and lambda from 2^-7 to 17 made those draws about
+//    1.6x faster on the CPU, but its constant array made the GLSL frames 2x slower on llvmpipe.)
 // The overall mean is then N p^N + P(M) (1 + m) = N p up to those errors and the rounding of the
 // closed forms (about one ulp of N p). Measured figures: docs/binomial.md.
 //
@@ -78,10 +76,11 @@
 // x^3 / 6) for the mean-preserving sampler); the mean-preserving sampler's end probabilities are
 // taken as 0 where they fall below the normal range; N <= 2 needs no transcendental at all.
 // Sparse glints (N p << 1), the common case, then cost two comparisons. Where the middle is
-// drawn, its setup (step 4) costs a table read (a log2 and 16 node pairs), or a sqrt and two
-// polynomials from N p = 17 on; below N = 4 and N p = 2^-7 the moments, a log and an exp. The
-// table reads are out of line in C++: inlined, they slowed the sampler's other paths. Measured
-// against Alg. 1 and std::binomial_distribution: docs/binomial.md.
+// drawn, its setup (step 4) costs a table read (N < 32: a log2, two sqrt and 16 node pairs, and
+// an exp), or a sqrt and two polynomials from N p = 17 on; elsewhere the ends (a log1p and an
+// exp), the moments, and the one-sided fit (a log, two polynomials, an exp). The table read is
+// out of line in C++: inlined, it slowed the sampler's other paths. Measured against Alg. 1 and
+// std::binomial_distribution: docs/binomial.md.
 #pragma once
 
 #include "glint/core.hpp"

@@ -169,22 +169,19 @@ TEST_CASE("the far bound's table keeps the middle's mean and variance between it
 namespace {
 
 // The worst relative errors of the middle offset's mean and variance against their targets, for N
-// >= 32 at 12 lambda x 8 p_near (between the nodes of GLINT_BINOMIAL_MIDDLE_TABLE below lambda =
-// 17), for the sampler's own (t, sigma) or, as a deliberately wrong variant, for t = m / sd and
-// sigma = sd with m = lambda - 1 (the ends and the clamp ignored) everywhere.
-std::pair<double, double> middle_table_errors(bool closed_form_everywhere) {
+// >= 32 at 7 lambda = N p_near >= 17 x 8 p_near, for the sampler's own (t, sigma)
+// (glint_binomial_busy_fit) or, as a deliberately wrong variant, for the same fit evaluated at
+// lambda / (1 - p_near) with p_near = 0 (mean and variance both off by the factor 1 / (1 - p_near)).
+std::pair<double, double> busy_fit_errors(bool wrong_variance) {
     using K = glint::detail::glsl::kernels<double>;
     double mean = 0, var = 0;
-    for (double lambda : {0.0093, 0.031, 0.17, 0.77, 2.3, 5.9, 11.3, 16.7, 18.3, 23.7, 37.1, 61.0})
+    for (double lambda : {17.0, 18.3, 23.7, 30.0, 37.1, 61.0, 300.0})
         for (double r : {1e-6, 0.013, 0.11, 0.29, 0.53, 0.71, 0.87, 0.997}) {
-            const double p = r * std::min(0.5, lambda / 32), N = lambda / p;
+            const double p = r * std::min(0.5, lambda / 34), N = lambda / p;
             const auto e = K::glint_binomial_unbiased_ends(N, p, K::GLINT_POW_LOG1P);
             const auto g = K::glint_binomial_middle_targets(N, p, e);
             glm::dvec2 f = glm::dvec2(K::glint_binomial_middle_fit(N, p));
-            if (closed_form_everywhere) {
-                const double sd = std::sqrt(lambda * (1 - p));
-                f = glm::dvec2((lambda - 1) / sd, sd);
-            }
+            if (wrong_variance) f = glm::dvec2(K::glint_binomial_busy_fit(lambda / (1 - p), 0.0));
             const auto m = K::glint_capped_offset_moments(f.x, f.y, N - 2);
             mean = std::max(mean, std::fabs(m.mean / g.mean - 1));
             var = std::max(var, std::fabs((m.square_mean - m.mean * m.mean) / g.variance - 1));
@@ -194,17 +191,17 @@ std::pair<double, double> middle_table_errors(bool closed_form_everywhere) {
 
 }  // namespace
 
-TEST_CASE("the middle's table for N >= 32 keeps its mean and variance between its nodes, and the test sees the closed form misused") {
-    // bench/fit_binomial_middle_table.cpp measures, on a sweep 7.3 times finer than the nodes,
-    // 9.5e-6 (mean) and 3.0e-5 (variance) at worst; the bounds below allow 1.6x and 2.3x. The
-    // points from lambda = 17 on check glint_binomial_busy_fit.
-    const auto ours = middle_table_errors(false);
-    MESSAGE("middle's table, relative errors: mean " << ours.first << ", variance " << ours.second);
-    CHECK(ours.first <= 1.5e-5);
-    CHECK(ours.second <= 7e-5);
-    const auto closed_form = middle_table_errors(true);
-    MESSAGE("t = m / sd, sigma = sd everywhere: mean " << closed_form.first << ", variance " << closed_form.second);
-    CHECK(closed_form.first > 1e-2);
+TEST_CASE("the busy fit for N p_near >= 17 keeps the middle's mean and variance, and the test sees a wrong fit") {
+    // The ends weigh less than exp(-17) = 4.1e-8 there and the polynomials' errors are below 1e-8:
+    // the bounds allow 1e-7 (mean) and 2e-6 (variance: v's share of the ends is up to lambda times
+    // theirs).
+    const auto ours = busy_fit_errors(false);
+    MESSAGE("busy fit, relative errors: mean " << ours.first << ", variance " << ours.second);
+    CHECK(ours.first <= 1e-7);
+    CHECK(ours.second <= 2e-6);
+    const auto wrong = busy_fit_errors(true);
+    MESSAGE("the wrong fit: mean " << wrong.first << ", variance " << wrong.second);
+    CHECK(wrong.first > 0.1);
 }
 
 TEST_CASE("the mean-preserving sampler's law is symmetric: p -> 1 - p mirrors n -> N - n") {

@@ -913,7 +913,7 @@ GLINT_FN_OUT_OF_LINE vec2 glint_binomial_two_sided_fit(real N, real p_near) {
 // made the GLSL frames of examples/gl/glint_gl on llvmpipe 2x slower: dropped.)
 GLINT_CONST(real) GLINT_BINOMIAL_BUSY_LAMBDA = real(17);
 
-GLINT_FN bool glint_binomial_middle_tabulated(real N, real p_near) {
+GLINT_FN bool glint_binomial_middle_needs_no_ends(real N, real p_near) {
     return N >= real(4) && (N < GLINT_BINOMIAL_FAR_N_MAX || N * p_near >= GLINT_BINOMIAL_BUSY_LAMBDA);
 }
 
@@ -951,7 +951,7 @@ GLINT_FN vec3 glint_binomial_busy_fit(real lambda, real p_near) {
     return vec3(t, sigma, sigma * t);
 }
 
-// (t, sigma, sigma t) of the middle where glint_binomial_middle_tabulated: the far bound's table
+// (t, sigma, sigma t) of the middle where glint_binomial_middle_needs_no_ends: the far bound's table
 // below N = 32, glint_binomial_busy_fit from lambda = 17 on.
 GLINT_FN vec3 glint_binomial_middle_fit(real N, real p_near) {
     real lambda = N * p_near;
@@ -970,7 +970,7 @@ GLINT_FN glint_binomial_middle glint_binomial_unbiased_middle_setup(real N, real
     q.lower = e.lower;
     q.span = N - real(2);
     real p_near = (e.lower > real(0.5)) ? p : real(1) - p;
-    bool tabulated = glint_binomial_middle_tabulated(N, p_near);
+    bool no_ends = glint_binomial_middle_needs_no_ends(N, p_near);
     // The middle's moments, where neither a table nor the closed form gives its parameters, and
     // below N = 4, where the two-point law needs the mean. N <= 3: the middle holds at most two
     // counts, 1 and N - 1, and a Bernoulli with the right mean is exact at N = 3 (and continuous
@@ -979,12 +979,12 @@ GLINT_FN glint_binomial_middle glint_binomial_unbiased_middle_setup(real N, real
     glint_binomial_targets g;
     g.mean = real(0);
     g.variance = real(0);
-    if (!tabulated) g = glint_binomial_middle_targets(N, p, e);
-    q.two_point = (!tabulated && q.span > real(0)) ? g.mean / q.span : real(0);
+    if (!no_ends) g = glint_binomial_middle_targets(N, p, e);
+    q.two_point = (!no_ends && q.span > real(0)) ? g.mean / q.span : real(0);
     vec3 f = vec3(real(0));
     if (q.span > real(1)) {  // N <= 3: the two-point law alone
         // One call of each fit, so that GLSL inlines each table lookup once.
-        if (tabulated || N < GLINT_BINOMIAL_FAR_N_MAX) {
+        if (no_ends || N < GLINT_BINOMIAL_FAR_N_MAX) {
             f = glint_binomial_middle_fit(N, p_near);
         } else {
             vec2 h = glint_binomial_one_sided_fit(g);
@@ -1061,7 +1061,7 @@ GLINT_FN glint_binomial glint_binomial_unbiased(real N, real p, real u1, real u2
     // 1 / (1 + x): at N q = 10, 0.4% of the draws left to decide from the ends instead of 9%. One
     // path for both, so that the middle's setup is inlined once (in GLSL, twice made the frames
     // of examples/gl/glint_gl slower on llvmpipe).
-    bool surely_middle = method != GLINT_POW_NAIVE && glint_binomial_middle_tabulated(N, min(p, real(1) - p)) &&
+    bool surely_middle = method != GLINT_POW_NAIVE && glint_binomial_middle_needs_no_ends(N, min(p, real(1) - p)) &&
                          u1 * glint_binomial_exp_taylor3(real(0.999) * N * (real(1) - p)) >= real(1.001) &&
                          (real(1) - u1 - real(1e-6)) * glint_binomial_exp_taylor3(real(0.999) * N * p) >= real(1.001);
     glint_binomial_ends e;

@@ -42,6 +42,16 @@ TEST_CASE("pcg3d is bit-exact between C++ and GLSL on 1e6 inputs") {
     CHECK(compare(out, cpu).differing == 0u);
 }
 
+TEST_CASE("hash_u32 is bit-exact between C++ and GLSL on 1e6 inputs") {
+    const std::size_t n = 1000000;
+    std::vector<std::uint32_t> in(n);
+    for (std::size_t i = 0; i < n; ++i) in[i] = (i % 2) ? static_cast<std::uint32_t>(i) : static_cast<std::uint32_t>(i) * 2654435761u;
+    auto out = glint_test::map_words({"core.glsl"}, "out0[i] = glint_hash_u32(in0[i]);", in, n, 1);
+    std::vector<std::uint32_t> cpu(n);
+    for (std::size_t i = 0; i < n; ++i) cpu[i] = glint::hash_u32(in[i]);
+    CHECK(compare(out, cpu).differing == 0u);
+}
+
 TEST_CASE("uniform variates are bit-exact between C++ and GLSL") {
     const std::size_t n = 1u << 20;
     std::vector<std::uint32_t> in(n);

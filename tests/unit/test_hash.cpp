@@ -78,3 +78,56 @@ TEST_CASE("open_unit_from_bits never gives 0 or 1 and is symmetric under bit inv
         REQUIRE(static_cast<double>(u) == glint::open_unit_from_bits<double>(h));
     }
 }
+
+namespace {
+
+// lowbias32 written out from Wellons' description ("Prospecting for Hash Functions", 2018): an
+// xorshift by 16, a multiply by 0x7feb352d, an xorshift by 15, a multiply by 0x846ca68b, an
+// xorshift by 16.
+std::uint32_t lowbias32_reference(std::uint32_t x) {
+    const std::uint32_t multipliers[2] = {0x7feb352du, 0x846ca68bu};
+    const int shifts[3] = {16, 15, 16};
+    for (int step = 0; step < 2; ++step) {
+        x ^= x >> shifts[step];
+        x *= multipliers[step];
+    }
+    return x ^ (x >> shifts[2]);
+}
+
+// The inverse of an odd multiplier modulo 2^32 by Newton's iteration y <- y (2 - a y), which
+// doubles the correct low bits each step (a is its own inverse modulo 8: 3 bits to start).
+std::uint32_t inverse_mod_2_32(std::uint32_t a) {
+    std::uint32_t y = a;
+    for (int i = 0; i < 4; ++i) y *= 2u - a * y;
+    return y;
+}
+
+// The inverse of y = x ^ (x >> s): x = y ^ (y >> s) ^ (y >> 2s) ^ ... (the sum telescopes to
+// x ^ (x >> ks) with ks >= 32).
+std::uint32_t unxorshift(std::uint32_t y, int s) {
+    std::uint32_t x = y;
+    for (int k = s; k < 32; k += s) x ^= y >> k;
+    return x;
+}
+
+}  // namespace
+
+TEST_CASE("hash_u32 matches lowbias32 written out step by step, and is inverted by the inverse steps on 1e6 inputs") {
+    const std::uint32_t inv1 = inverse_mod_2_32(0x7feb352du), inv2 = inverse_mod_2_32(0x846ca68bu);
+    REQUIRE(inv1 * 0x7feb352du == 1u);
+    REQUIRE(inv2 * 0x846ca68bu == 1u);
+    std::uint32_t state = 99u;
+    for (int i = 0; i < 1000000; ++i) {
+        const std::uint32_t x = (i % 2) ? static_cast<std::uint32_t>(i) : state;
+        state = state * 747796405u + 2891336453u;
+        const std::uint32_t h = glint::hash_u32(x);
+        REQUIRE(h == lowbias32_reference(x));
+        // Undo the steps in reverse order: a bijection, so distinct words never collide.
+        std::uint32_t y = unxorshift(h, 16);
+        y *= inv2;
+        y = unxorshift(y, 15);
+        y *= inv1;
+        y = unxorshift(y, 16);
+        REQUIRE(y == x);
+    }
+}

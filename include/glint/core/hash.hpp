@@ -11,6 +11,10 @@ namespace glint {
 // PCG3D (Jarzynski and Olano 2020): a bijective hash of three 32-bit words.
 inline glm::uvec3 pcg3d(glm::uvec3 v) { return detail::glsl::kernels<float>::glint_pcg3d(v); }
 
+// Wellons' lowbias32: a bijective hash of one 32-bit word, two multiplies (grid.glsl's per slope
+// cell draws).
+inline std::uint32_t hash_u32(std::uint32_t x) { return detail::glsl::kernels<float>::glint_hash_u32(x); }
+
 // k * 2^-24 in [0, 1) from the top 24 bits of h. Exact for float and double.
 template <class real = float>
 real unit_from_bits(std::uint32_t h) {

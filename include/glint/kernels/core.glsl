@@ -23,6 +23,29 @@ GLINT_FN uvec3 glint_pcg3d(uvec3 v) {
     return v;
 }
 
+// A 32-bit finaliser: Wellons' "lowbias32" (https://nullprogram.com/blog/2018/07/31/, the
+// constants found by his hash-prospector search; bias 0.17 against 0.02 for the best known
+// two-multiply hashes of that search). Two multiplies against PCG3D's twelve: for one word
+// where one uniform decides (grid.glsl's per slope cell draws).
+GLINT_FN uint glint_hash_u32(uint x) {
+    x ^= x >> 16u;
+    x *= 0x7feb352du;
+    x ^= x >> 15u;
+    x *= 0x846ca68bu;
+    x ^= x >> 16u;
+    return x;
+}
+
+// glint_hash_u32 on four words at once (vectorised in C++, where the compiler can).
+GLINT_FN uvec4 glint_hash_u32x4(uvec4 x) {
+    x ^= x >> 16u;
+    x *= 0x7feb352du;
+    x ^= x >> 15u;
+    x *= 0x846ca68bu;
+    x ^= x >> 16u;
+    return x;
+}
+
 // A uniform variate in [0, 1) from the top 24 bits of a hash: k * 2^-24, exact in float.
 GLINT_FN real glint_unit_from_bits(uint h) {
     return real(h >> 8u) * real(5.9604644775390625e-8);  // 2^-24
@@ -33,6 +56,10 @@ GLINT_FN real glint_unit_from_bits(uint h) {
 // Use it where 0 or 1 would be a singular input (quantiles, logarithms).
 GLINT_FN real glint_open_unit_from_bits(uint h) {
     return real(((h >> 9u) << 1u) | 1u) * real(5.9604644775390625e-8);  // 2^-24
+}
+
+GLINT_FN vec4 glint_open_unit_from_bits4(uvec4 h) {
+    return vec4(((h >> 9u) << 1u) | uvec4(1u)) * real(5.9604644775390625e-8);  // 2^-24
 }
 
 // ---------------------------------------------------------------------------------------------

@@ -229,6 +229,25 @@ GLINT_FN vec4 glint_slope_weights(vec2 s, real cell, GLINT_OUT(ivec2) base) {
     return vec4((real(1) - f.x) * (real(1) - f.y), f.x * (real(1) - f.y), (real(1) - f.x) * f.y, f.x * f.y);
 }
 
+// The random words of the draw at one (grid vertex, slope cell) pair. The slope cell's key is
+// hashed once per light (four cells), the pair's first word from the vertex's first hash word and
+// the key with one glint_hash_u32 (two multiplies; PCG3D, which this replaced, has twelve and cost
+// 12% of the point-light frame); the second word, for u2, only where the skip test does not decide
+// (most pairs of sparse glints), from the first and the vertex's second word. Each is a bijection
+// of a word that a good hash of the vertex makes uniform; tests/stat/test_uniformity.cpp checks
+// that neighbouring cells, neighbouring vertices and the two words are independent.
+GLINT_FN uint glint_slope_cell_key(ivec2 cell) {
+    return glint_hash_u32(uint(cell.x) * 0x9e3779b9u + uint(cell.y));  // 2^32 / golden ratio: cells 1 apart map far apart
+}
+
+GLINT_FN uint glint_cell_draw_word(uint vertex_word, uint cell_key) {
+    return glint_hash_u32(vertex_word ^ cell_key);
+}
+
+GLINT_FN uint glint_cell_draw_second_word(uint first_word, uint vertex_second_word) {
+    return glint_hash_u32(first_word ^ vertex_second_word);
+}
+
 // The footprint's microfacets on the grid: up to 12 (lattice point, triangle vertex) pairs, each
 // with its triangle weight l_t, its share of the footprint's N microfacets (w_L, times the
 // per-vertex log-normal factor if enabled) and its hashed random numbers. Shared by the
@@ -360,35 +379,46 @@ GLINT_FN glint_grid_estimate glint_grid_sample_pixel(GLINT_INOUT(glint_grid_pixe
     int corners = 0;
     real corner_m[4];
     real corner_p[4];
-    uint corner_x[4];
-    uint corner_y[4];
+    uint corner_key[4];
     for (int j = 0; j < 4; ++j) {
         corner_m[j] = real(0);
         corner_p[j] = real(0);
-        corner_x[j] = 0u;
-        corner_y[j] = 0u;
+        corner_key[j] = 0u;
     }
     for (int j = 0; j < 4; ++j) {
         if (!(mu[j] > real(0)) || !(p[j] > real(0))) continue;
         corner_m[corners] = mu[j];
         corner_p[corners] = p[j];
-        corner_x[corners] = uint(sbase.x + (j & 1));
-        corner_y[corners] = uint(sbase.y + (j >> 1));
+        corner_key[corners] = glint_slope_cell_key(sbase + ivec2(j & 1, j >> 1));
         ++corners;
     }
     bool skip_test = glint_skip_test_applies(g);
+    uvec4 keys = uvec4(corner_key[0], corner_key[1], corner_key[2], corner_key[3]);
+    vec4 probability = vec4(corner_p[0], corner_p[1], corner_p[2], corner_p[3]);
     // The three triangle vertices of a lattice point draw with the same N w_L (unless the
     // log-normal factor is on) and p_j: the mean-preserving sampler sets up once per corner for them.
     glint_binomial_cache cache[4];
     for (int j = 0; j < 4; ++j) cache[j] = glint_binomial_empty_cache();
     for (int i = 0; i < px.v.count; ++i) {
         real n = N * px.v.share[i];
-        real skip_scale = max(n, real(2));
-        for (int j = 0; j < corners; ++j) {
-            uvec3 hs = glint_pcg3d(uvec3(px.v.hash[i].x ^ corner_x[j], px.v.hash[i].y ^ corner_y[j], px.v.hash[i].z));
-            real u1 = glint_open_unit_from_bits(hs.x);
-            if (skip_test && glint_surely_no_success_at(skip_scale, corner_p[j], u1)) continue;
-            real u2 = glint_open_unit_from_bits(hs.y);
+        uint hx = px.v.hash[i].x;
+        uint hy = px.v.hash[i].y;
+        // The skip test for the four corners at once (glint_surely_no_success_at lane by lane:
+        // a corner draws where u1 < max(n, 2) p 1.0001 + 1e-5), as a bit mask of the corners that
+        // draw; most vertices of sparse glints have none.
+        vec4 u1s = glint_open_unit_from_bits4(glint_hash_u32x4(uvec4(hx) ^ keys));
+        vec4 bound = max(n, real(2)) * probability * real(1.0001) + real(1e-5);
+        int draw_mask = 0;
+        if (corners > 0 && (!skip_test || u1s.x < bound.x)) draw_mask |= 1;
+        if (corners > 1 && (!skip_test || u1s.y < bound.y)) draw_mask |= 2;
+        if (corners > 2 && (!skip_test || u1s.z < bound.z)) draw_mask |= 4;
+        if (corners > 3 && (!skip_test || u1s.w < bound.w)) draw_mask |= 8;
+        if (draw_mask == 0) continue;
+        for (int j = 0; j < 4; ++j) {
+            if (((draw_mask >> j) & 1) == 0) continue;
+            uint h1 = glint_cell_draw_word(hx, corner_key[j]);
+            real u1 = glint_open_unit_from_bits(h1);
+            real u2 = glint_open_unit_from_bits(glint_cell_draw_second_word(h1, hy));
             glint_binomial b = glint_binomial_variant_cached(g.variant, n, corner_p[j], u1, u2, g.pow_method, cache[j]);
             o.value += px.v.weight[i] * corner_m[j] * b.positive / N;  // the draw itself carries w_L
             ++o.draws;

@@ -89,8 +89,9 @@ GLINT_FN glint_ibl_shares glint_ibl_level_shares(GLINT_INOUT(glint_grid_pixel) p
     for (int i = 0; i < px.v.count; ++i) {
         // The multinomial's root draws the lit levels against the rest with these uniforms: if it
         // surely draws none, every count is 0 (glint_surely_no_success).
-        if (glint_surely_no_success(g, N * px.v.share[i], min(lit_total, real(1)), glint_multinomial_uniforms(px.v.hash[i], 0).x)) continue;
-        glint_multinomial_counts c = glint_multinomial_cached(N * px.v.share[i], lit, K - 1, px.v.hash[i], g.variant, g.pow_method, root_cache);
+        vec2 root_u = glint_multinomial_uniforms(px.v.hash[i], 0);
+        if (glint_surely_no_success(g, N * px.v.share[i], min(lit_total, real(1)), root_u.x)) continue;
+        glint_multinomial_counts c = glint_multinomial_from_root(N * px.v.share[i], lit, K - 1, px.v.hash[i], root_u, g.variant, g.pow_method, root_cache);
         for (int k = 0; k < 7; ++k) o.share[k + 1] += px.v.weight[i] * c.count[k] / N;
         o.draws += K - 1;
     }

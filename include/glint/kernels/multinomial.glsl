@@ -32,9 +32,12 @@ GLINT_FN vec2 glint_multinomial_uniforms(uvec3 seed, int node) {
 // they sum to more than 1). `variant` is a GLINT_BINOMIAL_* code, `method` a GLINT_POW_* code,
 // `seed` any three words (a hash of the pixel, the grid vertex and the frame). With the
 // mean-preserving variant the root draw keeps its parameters in `root_cache`, for the next call
-// with the same N and probabilities (the same counts as without).
-GLINT_FN glint_multinomial_counts glint_multinomial_cached(real N, glint_multinomial_probabilities probs, int K, uvec3 seed,
-                                                          int variant, int method, GLINT_INOUT(glint_binomial_cache) root_cache) {
+// with the same N and probabilities (the same counts as without). `root_u` is
+// glint_multinomial_uniforms(seed, 0), for callers that have it already (glint_multinomial_cached
+// below computes it).
+GLINT_FN glint_multinomial_counts glint_multinomial_from_root(real N, glint_multinomial_probabilities probs, int K, uvec3 seed,
+                                                             vec2 root_u, int variant, int method,
+                                                             GLINT_INOUT(glint_binomial_cache) root_cache) {
     K = clamp(K, 2, 8);
     N = max(N, real(0));
     real total = real(0);
@@ -49,8 +52,7 @@ GLINT_FN glint_multinomial_counts glint_multinomial_cached(real N, glint_multino
     glint_multinomial_counts result;
     for (int k = 0; k < 8; ++k) result.count[k] = real(0);
     // Root: the K bins against the rest.
-    vec2 u = glint_multinomial_uniforms(seed, 0);
-    glint_binomial root = glint_binomial_variant_cached(variant, N, total, u.x, u.y, method, root_cache);
+    glint_binomial root = glint_binomial_variant_cached(variant, N, total, root_u.x, root_u.y, method, root_cache);
     result.rest = root.negative;
 
     // Breadth-first over the inner nodes [lo, hi) of the bins, at most K - 1 = 7 of them; a node's
@@ -103,6 +105,11 @@ GLINT_FN glint_multinomial_counts glint_multinomial_cached(real N, glint_multino
         }
     }
     return result;
+}
+
+GLINT_FN glint_multinomial_counts glint_multinomial_cached(real N, glint_multinomial_probabilities probs, int K, uvec3 seed,
+                                                          int variant, int method, GLINT_INOUT(glint_binomial_cache) root_cache) {
+    return glint_multinomial_from_root(N, probs, K, seed, glint_multinomial_uniforms(seed, 0), variant, method, root_cache);
 }
 
 GLINT_FN glint_multinomial_counts glint_multinomial(real N, glint_multinomial_probabilities probs, int K, uvec3 seed,

@@ -231,9 +231,10 @@ GLINT_FN vec4 glint_slope_weights(vec2 s, real cell, GLINT_OUT(ivec2) base) {
 
 // The random words of the draw at one (grid vertex, slope cell) pair. The slope cell's key is
 // hashed once per light (four cells), the pair's first word from the vertex's first hash word and
-// the key with one glint_hash_u32 (two multiplies; PCG3D, which this replaced, has twelve and cost
-// 12% of the point-light frame); the second word, for u2, only where the skip test does not decide
-// (most pairs of sparse glints), from the first and the vertex's second word. Each is a bijection
+// the key with one glint_hash_u32 (two multiplies; PCG3D, which this replaced, has twelve: the
+// point-light frame took 10% fewer instructions on the CPU); the second word, for u2, only where
+// the skip test does not decide (most pairs of sparse glints), from the first and the vertex's
+// second word. Each is a bijection
 // of a word that a good hash of the vertex makes uniform; tests/stat/test_uniformity.cpp checks
 // that neighbouring cells, neighbouring vertices and the two words are independent.
 GLINT_FN uint glint_slope_cell_key(ivec2 cell) {
@@ -405,7 +406,10 @@ GLINT_FN glint_grid_estimate glint_grid_sample_pixel(GLINT_INOUT(glint_grid_pixe
         uint hy = px.v.hash[i].y;
         // The skip test for the four corners at once (glint_surely_no_success_at lane by lane:
         // a corner draws where u1 < max(n, 2) p 1.0001 + 1e-5), as a bit mask of the corners that
-        // draw; most vertices of sparse glints have none.
+        // draw; most vertices of sparse glints have none, and skip the inner loop whole. Against
+        // a test per corner inside that loop: 9% fewer instructions per point-light frame on the
+        // CPU, and on llvmpipe, which runs 8 pixels in lockstep, 2.4x faster glint frames
+        // (examples/gl/glint_gl, point light, 192x120: 700 against 290 ms).
         vec4 u1s = glint_open_unit_from_bits4(glint_hash_u32x4(uvec4(hx) ^ keys));
         vec4 bound = max(n, real(2)) * probability * real(1.0001) + real(1e-5);
         int draw_mask = 0;

@@ -72,10 +72,8 @@ GLINT_FN glint_multinomial_counts glint_multinomial_from_root(real N, glint_mult
         int mid = lo + (hi - lo) / 2;
         real left = real(0);
         real right = real(0);
-        for (int k = 0; k < 8; ++k) {
-            left += (k >= lo && k < mid) ? probs.p[k] : real(0);
-            right += (k >= mid && k < hi) ? probs.p[k] : real(0);
-        }
+        for (int k = lo; k < mid; ++k) left += probs.p[k];  // the same sums as over all 8 bins with zeros
+        for (int k = mid; k < hi; ++k) right += probs.p[k];
         real q = (left + right > real(0)) ? clamp(left / (left + right), real(0), real(1)) : real(0.5);
         real n_left = real(0);
         if (n > real(0)) {  // an empty node splits into empty halves: no hash, no draw

@@ -172,3 +172,61 @@ TEST_CASE("the mean-preserving sampler with a cache gives exactly the uncached r
     CHECK(reused > checked / 10);
     CHECK(differ == 0);
 }
+
+namespace {
+
+// The far end p_near^N as the log1p evaluation gives it (float): exp(N log1p(-(1 - p_near))), 0
+// below exp(-88).
+float far_end_by_log1p(float N, float p_near) {
+    const float x = N * K<float>::glint_log1p(-(1.0f - p_near));
+    return (x < -K<float>::GLINT_BINOMIAL_UNDERFLOW_MEAN) ? 0.0f : std::exp(x);
+}
+
+// The kernel's bound (glint_binomial_far_end_underflows) with another threshold on floor(N) e.
+bool exponent_bound(float N, float p_near, int limit) {
+    int e;
+    std::frexp(p_near, &e);
+    return static_cast<int>(N) * e <= limit;
+}
+
+}  // namespace
+
+TEST_CASE("the far end's exponent bound fires only where log1p and exp give 0, and the test sees a bound set too high") {
+    // N from 2.01 to 126.9 (the range where the bound is consulted; from N log 2 >= 88 on the far
+    // end underflows anyway), p_near from 1e-12 to 1/2 in 4000 log steps and around every
+    // threshold 2^(-128 / N), both sides of 1/2 (the far end is p^N below 1/2, (1 - p)^N above).
+    std::vector<float> ns;
+    for (float N = 2.01f; N < 127.0f; N *= 1.013f) ns.push_back(N);
+    int fired = 0, consulted = 0, wrong_fired_on_nonzero = 0;
+    for (float N : ns) {
+        std::vector<float> ps;
+        for (int i = 0; i <= 4000; ++i) ps.push_back(static_cast<float>(std::pow(10.0, -12.0 + (12.0 - std::log10(2.0)) * i / 4000)));
+        for (double scale : {0.5, 0.9, 0.99, 1.0, 1.01, 1.1, 2.0}) ps.push_back(static_cast<float>(std::pow(2.0, -128.0 * scale / std::floor(static_cast<double>(N)))));
+        for (float p_near : ps) {
+            if (!(p_near > 0 && p_near <= 0.5f) || N * 0.6931472f >= 88.0f) continue;
+            ++consulted;
+            const float reference = far_end_by_log1p(N, p_near);
+            const bool bound = K<float>::glint_binomial_far_end_underflows(N, p_near);
+            fired += bound;
+            if (bound) {
+                CAPTURE(N);
+                CAPTURE(p_near);
+                REQUIRE(reference == 0.0f);
+            }
+            // The kernel's ends carry the same far end either way.
+            for (float p : {p_near, 1.0f - p_near}) {
+                const auto e = K<float>::glint_binomial_unbiased_ends_evaluated(N, p, K<float>::GLINT_POW_LOG1P);
+                const float far = (p <= 0.5f) ? e.all_positive : e.all_negative;
+                CAPTURE(N);
+                CAPTURE(p);
+                REQUIRE(far == far_end_by_log1p(N, (p <= 0.5f) ? p : 1.0f - p));  // the kernel's own p_near
+            }
+            // Wrong on purpose: the threshold at floor(N) e <= -120 fires where the far end can still
+            // be a normal number.
+            wrong_fired_on_nonzero += exponent_bound(N, p_near, -120) && reference > 0.0f;
+        }
+    }
+    MESSAGE("the bound fired at " << fired << " of " << consulted << " (N, p_near); the wrong bound at " << wrong_fired_on_nonzero << " where the far end is not 0");
+    CHECK(fired > consulted / 4);
+    CHECK(wrong_fired_on_nonzero > 0);
+}

@@ -329,6 +329,17 @@ struct glint_binomial_ends {
 // costs about 150 ns here.
 GLINT_CONST(real) GLINT_BINOMIAL_UNDERFLOW_MEAN = GLINT_DOUBLE ? real(709) : real(88);
 
+// True where the far end p_near^N is surely below exp(-GLINT_BINOMIAL_UNDERFLOW_MEAN), without a
+// transcendental: with p_near = m 2^e (frexp, exact; m < 1), p_near^N <= p_near^floor(N) <
+// 2^(floor(N) e), which is at most 2^-128 where floor(N) e <= -128 (2^-1024 in double), below
+// exp(-88) = 2.06 * 2^-128 (exp(-709) = 2.19 * 2^-1024) by more than the log1p's rounding. Where it
+// holds, the far end's log1p and exp would give 0 (x_far < -88): it saves the log1p.
+GLINT_FN bool glint_binomial_far_end_underflows(real N, real p_near) {
+    int e;
+    frexp(p_near, e);
+    return N < real(1024) && int(N) * e <= (GLINT_DOUBLE ? -1024 : -128);
+}
+
 GLINT_FN glint_binomial_ends glint_binomial_unbiased_ends_evaluated(real N, real p, int method) {
     glint_binomial_ends e;
     e.lower = (p <= real(0.5)) ? real(1) : real(0);
@@ -344,7 +355,8 @@ GLINT_FN glint_binomial_ends glint_binomial_unbiased_ends_evaluated(real N, real
         // (exp's underflow path costs about 20 ns) and, for the far end, without its log1p:
         // x_far <= -N log 2 since p_near <= 1/2.
         real x = N * glint_log1p(-p_near);
-        bool far_underflows = N * real(0.693147180559945309417) >= GLINT_BINOMIAL_UNDERFLOW_MEAN;  // log 2, 21 digits
+        bool far_underflows = N * real(0.693147180559945309417) >= GLINT_BINOMIAL_UNDERFLOW_MEAN ||  // log 2, 21 digits
+                              glint_binomial_far_end_underflows(N, p_near);
         real x_far = far_underflows ? real(0) : N * glint_log1p(-(real(1) - p_near));
         real none_near = (x >= -GLINT_BINOMIAL_UNDERFLOW_MEAN) ? exp(x) : real(0);
         real all_near = (far_underflows || x_far < -GLINT_BINOMIAL_UNDERFLOW_MEAN) ? real(0) : exp(x_far);

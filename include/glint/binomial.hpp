@@ -74,7 +74,9 @@
 // p > 1/2) from Bernoulli's inequality; the middle needs no gate where u1 is surely between p^N
 // and 1 - (1 - p)^N (bounded by 1 / (1 + x) with x = N q for Alg. 1, by 1 / (1 + x + x^2 / 2 +
 // x^3 / 6) for the mean-preserving sampler); the mean-preserving sampler's end probabilities are
-// taken as 0 where they fall below the normal range; N <= 2 needs no transcendental at all.
+// taken as 0 where they fall below the normal range, the far end's without its log1p where the
+// exponent of p_near already shows it (p_near^N < 2^(floor(N) e) <= 2^-128); N <= 2 needs no
+// transcendental at all.
 // Sparse glints (N p << 1), the common case, then cost two comparisons. Where the middle is
 // drawn, its setup (step 4) costs a table read (N < 32: a log2, two sqrt and 16 node pairs, and
 // an exp), or a sqrt and two polynomials from N p = 17 on; elsewhere the ends (a log1p and an

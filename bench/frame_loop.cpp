@@ -1,0 +1,76 @@
+// Fixed workloads for counting instructions, where this machine's timings are too noisy to see a
+// change of a few percent (valgrind --tool=callgrind counts the same on every run):
+//   glint_frame_loop point FRAMES          the showcase's 160 x 100 point-light frame, glints on
+//   glint_frame_loop point-smooth FRAMES   the same frame shaded smooth
+//   glint_frame_loop ibl K FRAMES          glint::ibl_sample on bench/report_ibl.cpp's sphere
+//                                          (sunset.exr); count it alone with
+//                                          --toggle-collect='glint_ibl_estimate*'
+//   glint_frame_loop draw N P              2e5 draws of glint::binomial_unbiased at (N, P)
+// Each prints a sum of its results, so that two builds can be checked to compute the same.
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+
+#include <glint/binomial.hpp>
+#include <glint/ibl.hpp>
+#include <glint/io/exr.hpp>
+
+#include "../examples/lights_scene.hpp"
+
+#ifndef GLINT_DATA_DIR
+#error "GLINT_DATA_DIR must point at the project's data/ folder"
+#endif
+
+// Out of line, so that callgrind can count the estimate alone.
+__attribute__((noinline)) glint::ibl_estimate<float> glint_ibl_estimate(glm::vec2 uv, const glint::grid_params<float>& g, const glint::environment& env,
+                                                                        const glint::environment::sample& s, float e_d, float d_h) {
+    return glint::ibl_sample(uv, glm::vec2(1, 0), glm::vec2(0, 1), g, env.levels(), s.indicators, e_d, d_h);
+}
+
+int main(int argc, char** argv) {
+    const char* mode = argc > 1 ? argv[1] : "";
+    double sum = 0;
+    if (argc == 3 && (!std::strcmp(mode, "point") || !std::strcmp(mode, "point-smooth"))) {
+        using namespace glint_examples;
+        const camera cam(160, 100);
+        for (int frame = 0; frame < std::atoi(argv[2]); ++frame) {
+            scene_options opt;
+            opt.smooth = !std::strcmp(mode, "point-smooth");
+            light_setup ls;
+            ls.type = light_type::point;
+            shading_counters c;
+            for (int y = 0; y < 100; ++y)
+                for (int x = 0; x < 160; ++x) sum += static_cast<double>(render_pixel(opt, ls, cam, x, y, c).x);
+        }
+    } else if (argc == 4 && !std::strcmp(mode, "ibl")) {
+        const auto img = glint::io::read_exr(std::string(GLINT_DATA_DIR) + "/envmaps/sunset.exr");
+        glint::ibl_options o;
+        o.levels = std::atoi(argv[2]);
+        const auto env = glint::build_environment(img.width, img.height, img.rgb, o);
+        const float sa = 0.35f, dh = env.total_area(sa * sa);
+        for (int frame = 0; frame < std::atoi(argv[3]); ++frame)
+            for (int y = 0; y < 100; ++y)
+                for (int x = 0; x < 160; ++x) {
+                    const float px = (static_cast<float>(x) - 80) / 50, py = (50 - static_cast<float>(y)) / 50, rr = px * px + py * py;
+                    if (rr >= 1) continue;
+                    const glm::vec3 n(px, py, std::sqrt(1 - rr));
+                    const auto s = env.lookup(glm::reflect(glm::vec3(0, 0, -1), n), sa);
+                    glint::grid_params<float> g;
+                    g.log_density = 4.0f;
+                    g.seed = static_cast<std::uint32_t>(frame);
+                    const auto e = glint_ibl_estimate(glm::vec2(static_cast<float>(x), static_cast<float>(y)), g, env, s, env.visible_area(n.z, sa), dh);
+                    sum += static_cast<double>(glint::modulation(e));
+                }
+    } else if (argc == 4 && !std::strcmp(mode, "draw")) {
+        const float N = std::strtof(argv[2], nullptr), p = std::strtof(argv[3], nullptr);
+        for (std::uint32_t i = 0; i < 200000; ++i) {
+            const glm::uvec3 h = glint::pcg3d(glm::uvec3(i, 1u, 2u));
+            sum += static_cast<double>(glint::binomial_unbiased(N, p, glint::open_unit_from_bits<float>(h.x), glint::open_unit_from_bits<float>(h.y)).positive);
+        }
+    } else {
+        std::fprintf(stderr, "usage: glint_frame_loop point|point-smooth FRAMES | ibl K FRAMES | draw N P\n");
+        return 2;
+    }
+    std::printf("%s: sum %.9g\n", mode, sum);
+    return 0;
+}

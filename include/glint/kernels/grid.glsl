@@ -234,9 +234,9 @@ GLINT_FN vec4 glint_slope_weights(vec2 s, real cell, GLINT_OUT(ivec2) base) {
 // the key with one glint_hash_u32 (two multiplies; PCG3D, which this replaced, has twelve: the
 // point-light frame took 10% fewer instructions on the CPU); the second word, for u2, only where
 // the skip test does not decide (most pairs of sparse glints), from the first and the vertex's
-// second word. Each is a bijection
-// of a word that a good hash of the vertex makes uniform; tests/stat/test_uniformity.cpp checks
-// that neighbouring cells, neighbouring vertices and the two words are independent.
+// second word. Each is a bijection of a word that a good hash of the vertex makes uniform;
+// tests/stat/test_uniformity.cpp checks that neighbouring cells, neighbouring vertices and the
+// two words are independent.
 GLINT_FN uint glint_slope_cell_key(ivec2 cell) {
     return glint_hash_u32(uint(cell.x) * 0x9e3779b9u + uint(cell.y));  // 2^32 / golden ratio: cells 1 apart map far apart
 }

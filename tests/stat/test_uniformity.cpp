@@ -82,6 +82,8 @@ using K = glint::detail::glsl::kernels<float>;
 using draw_word_fn = std::function<std::uint32_t(std::uint32_t vertex_word, std::uint32_t cell_key)>;
 using second_word_fn = std::function<std::uint32_t(std::uint32_t first, std::uint32_t vertex_word)>;
 
+// A vertex's words as glint_footprint_vertices hashes them: its coordinates and the lattice key of
+// LOD 0, level 0, bin 0 (0 + 64 = 0x40) XOR a seed (here 0x9e3779b9).
 glm::uvec3 vertex_words(std::uint32_t x, std::uint32_t y) { return glint::pcg3d(glm::uvec3(x, y, 0x40u ^ 0x9e3779b9u)); }
 
 // Pairs over vertices (i mod 2048, i / 2048) and one cell c = (5, -3) (many cells would mix the

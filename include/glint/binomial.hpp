@@ -77,6 +77,8 @@
 // taken as 0 where they fall below the normal range, the far end's without its log1p where the
 // exponent of p_near already shows it (p_near^N < 2^(floor(N) e) <= 2^-128); N <= 2 needs no
 // transcendental at all.
+// Where the mean-preserving sampler surely draws the middle and its parameters need no ends, it
+// skips the gates as well (they would give the middle).
 // Sparse glints (N p << 1), the common case, then cost two comparisons. Where the middle is
 // drawn, its setup (step 4) costs a table read (N < 32: a log2, two sqrt and 16 node pairs, and
 // an exp), or a sqrt and two polynomials from N p = 17 on; elsewhere the ends (a log1p and an

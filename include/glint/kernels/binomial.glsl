@@ -1077,15 +1077,20 @@ GLINT_FN glint_binomial glint_binomial_unbiased(real N, real p, real u1, real u2
                          u1 * glint_binomial_exp_taylor3(real(0.999) * N * (real(1) - p)) >= real(1.001) &&
                          (real(1) - u1 - real(1e-6)) * glint_binomial_exp_taylor3(real(0.999) * N * p) >= real(1.001);
     glint_binomial_ends e;
+    glint_binomial_gates g;
     if (surely_middle) {
         e.all_positive = real(0);
         e.all_negative = real(0);
         e.any_near = real(1);
         e.lower = (p <= real(0.5)) ? real(1) : real(0);
+        // The gates with both ends 0 and 0 < u1 < 1 (the test above bounds u1 below 1): the middle.
+        g.positive_fixed = real(0);
+        g.negative_fixed = real(0);
+        g.gaussian = real(1);
     } else {
         e = glint_binomial_unbiased_ends(N, p, method);
+        g = glint_binomial_dual_gates(N, p, u1, e.all_positive, e.all_negative);
     }
-    glint_binomial_gates g = glint_binomial_dual_gates(N, p, u1, e.all_positive, e.all_negative);
     // The middle's parameters only where the gates chose the middle.
     real G = real(1);
     if (g.gaussian > real(0.5)) G = glint_binomial_unbiased_middle(glint_binomial_unbiased_middle_setup(N, p, e), N, u2);

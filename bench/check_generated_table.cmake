@@ -1,19 +1,28 @@
-# Whether the table that a generator prints is the one a kernel file holds: runs GENERATOR and
-# compares the text from "GLINT_FLOAT_TABLE(<NAME>" to the next "GLINT_TABLE_CLOSE;" in its
-# output with the same span of KERNEL.
-#   cmake -DGENERATOR=path -DKERNEL=path -DNAME=GLINT_... -P check_generated_table.cmake
+# Whether the table (or code) that a generator prints is the one a kernel file holds: runs
+# GENERATOR and compares the text from BEGIN (default "GLINT_FLOAT_TABLE(<NAME>") to the next END
+# (default "GLINT_TABLE_CLOSE;") in its output with the same span of KERNEL.
+#   cmake -DGENERATOR=path -DKERNEL=path -DNAME=GLINT_... [-DBEGIN=text -DEND=text] -P check_generated_table.cmake
+if(NOT DEFINED BEGIN)
+  set(BEGIN "GLINT_FLOAT_TABLE(${NAME}")
+endif()
+if(NOT DEFINED END)
+  set(END "GLINT_TABLE_CLOSE;")
+endif()
 execute_process(COMMAND "${GENERATOR}" OUTPUT_VARIABLE printed ERROR_VARIABLE log RESULT_VARIABLE rc)
 if(NOT rc EQUAL 0)
   message(FATAL_ERROR "${GENERATOR} failed (${rc}): ${log}")
 endif()
 file(READ "${KERNEL}" held)
 function(table_of text out)
-  string(FIND "${text}" "GLINT_FLOAT_TABLE(${NAME}" begin)
+  string(FIND "${text}" "${BEGIN}" begin)
   if(begin LESS 0)
-    message(FATAL_ERROR "no GLINT_FLOAT_TABLE(${NAME} found")
+    message(FATAL_ERROR "no ${BEGIN} found")
   endif()
   string(SUBSTRING "${text}" ${begin} -1 rest)
-  string(FIND "${rest}" "GLINT_TABLE_CLOSE;" end)
+  string(FIND "${rest}" "${END}" end)
+  if(end LESS 0)
+    message(FATAL_ERROR "no ${END} after ${BEGIN}")
+  endif()
   string(SUBSTRING "${rest}" 0 ${end} table)
   set(${out} "${table}" PARENT_SCOPE)
 endfunction()

@@ -60,10 +60,15 @@
 //    - N from 4 to 32: the far bound's table, scaled by sqrt(N p_near);
 //    - lambda = N p_near >= 17: the ends weigh less than exp(-17) = 4.1e-8, m = lambda - 1 and
 //      v = lambda (1 - p_near), and (t, sigma) come from w = sqrt(v) / m by two degree-6
-//      polynomials (t = m / sd, sigma = sd where w <= 1/6).
-//    Elsewhere (N below 4, or N >= 32 with lambda below 17) the moments are computed from the ends
-//    as in steps 1 and 2. (A table for N >= 32 and lambda from 2^-7 to 17 made those draws about
-//    1.6x faster on the CPU, but its constant array made the GLSL frames 2x slower on llvmpipe.)
+//      polynomials (t = m / sd, sigma = sd where w <= 1/6);
+//    - N >= 32 and lambda from 2^-7 to 17 (the band): the one-sided fit of step 2 as a function
+//      of (log2 lambda, 32 / N), polynomials in four pieces (glint_binomial_band_fit; made and
+//      measured by bench/fit_binomial_band.cpp: the offset's mean within 2.7e-6 and its variance
+//      within 1.8e-5 of their targets). They replaced the ends, m, v and the fit's log and exp,
+//      which cost these draws 2.1x (at N p = 1) to 2.3x (at N p = 10) their time now. (A table there
+//      was as fast on the CPU, but its constant array made the GLSL frames 2x slower on llvmpipe.)
+//    Elsewhere (N below 4, or N >= 32 with lambda below 2^-7, where the middle is drawn with
+//    probability about lambda) the moments are computed from the ends as in steps 1 and 2.
 // The overall mean is then N p^N + P(M) (1 + m) = N p up to those errors and the rounding of the
 // closed forms (about one ulp of N p). Measured figures: docs/binomial.md.
 //
@@ -81,8 +86,9 @@
 // skips the gates as well (they would give the middle).
 // Sparse glints (N p << 1), the common case, then cost two comparisons. Where the middle is
 // drawn, its setup (step 4) costs a table read (N < 32: a log2, two sqrt and 16 node pairs, and
-// an exp), or a sqrt and two polynomials from N p = 17 on; elsewhere the ends (a log1p and an
-// exp), the moments, and the one-sided fit (a log, two polynomials, an exp). The table read is
+// an exp), a log2, two sqrt and 21 to 24 polynomial terms per output in the band, or a sqrt and
+// two polynomials from N p = 17 on; elsewhere the ends (a log1p and an exp), the moments, and the
+// one-sided fit (a log, two polynomials, an exp). The table read is
 // out of line in C++: inlined, it slowed the sampler's other paths. Measured against Alg. 1 and
 // std::binomial_distribution: docs/binomial.md.
 #pragma once

@@ -204,6 +204,55 @@ TEST_CASE("the busy fit for N p_near >= 17 keeps the middle's mean and variance,
     CHECK(wrong.first > 0.1);
 }
 
+namespace {
+
+// The worst relative errors of the middle offset's mean and variance against their targets, for N
+// >= 32 and lambda = N p_near from 2^-7 to 17 (glint_binomial_band_fit, in double or float), at 12
+// lambda (between and on the polynomials' piece bounds) x 9 N from 32 to 1e12. The deliberately
+// wrong variant reads the polynomials at the Poisson limit q = 0 (N = infinity) for every N.
+template <class real>
+std::pair<double, double> band_fit_errors(bool poisson_limit) {
+    using K = glint::detail::glsl::kernels<double>;
+    using R = glint::detail::glsl::kernels<real>;
+    double mean = 0, var = 0;
+    for (double lambda : {0.0078125, 0.011, 0.05, 0.0883883, 0.3, 0.99, 1.0, 2.2, 4.0, 7.7, 12.9, 16.99})
+        for (double N : {32.0, 33.5, 40.0, 57.0, 100.0, 1e3, 1e5, 1e8, 1e12}) {
+            const double p = lambda / N;
+            if (p > 0.5) continue;
+            const auto g = K::glint_binomial_middle_targets(N, p, K::glint_binomial_unbiased_ends(N, p, K::GLINT_POW_LOG1P));
+            glm::dvec3 f = glm::dvec3(R::glint_binomial_middle_fit(static_cast<real>(N), static_cast<real>(p)));
+            if (poisson_limit) {
+                const glm::dvec2 s = glm::dvec2(K::glint_binomial_band_fit_scaled(std::log2(lambda), 0.0));
+                const double centre = lambda - 1 + s.x * std::sqrt(lambda), sigma = s.y * std::sqrt(lambda * (1 - p));
+                f = glm::dvec3(centre / sigma, sigma, centre);
+            }
+            const auto m = K::glint_capped_offset_moments(f.x, f.y, N - 2);
+            mean = std::max(mean, std::fabs(m.mean / g.mean - 1));
+            var = std::max(var, std::fabs((m.square_mean - m.mean * m.mean) / g.variance - 1));
+        }
+    return {mean, var};
+}
+
+}  // namespace
+
+TEST_CASE("the band's polynomials for N >= 32, N p_near < 17 keep the middle's mean and variance, and the test sees a wrong fit") {
+    // bench/fit_binomial_band.cpp measures 2.7e-6 (mean) and 1.8e-5 (variance) at worst over the
+    // band in double with the float coefficients; the bounds allow about 2x, and for the float
+    // kernel (a float log2 and 32 / N, float sums) 1e-5 and 5e-5 (measured: as in double).
+    const auto ours = band_fit_errors<double>(false);
+    MESSAGE("band fit (double), relative errors: mean " << ours.first << ", variance " << ours.second);
+    CHECK(ours.first <= 5.5e-6);
+    CHECK(ours.second <= 3.6e-5);
+    const auto single = band_fit_errors<float>(false);
+    MESSAGE("band fit (float), relative errors: mean " << single.first << ", variance " << single.second);
+    CHECK(single.first <= 1e-5);
+    CHECK(single.second <= 5e-5);
+    // The polynomials' dependence on N matters: read at N = infinity they miss the middle of N = 32.
+    const auto wrong = band_fit_errors<double>(true);
+    MESSAGE("the Poisson limit for every N: mean " << wrong.first << ", variance " << wrong.second);
+    CHECK(wrong.second > 1e-2);
+}
+
 TEST_CASE("the mean-preserving sampler's law is symmetric: p -> 1 - p mirrors n -> N - n") {
     for (double N : {3.0, 5.0, 10.0, 100.0, 1e6})
         for (double p : {0.01, 0.25, 0.375}) {

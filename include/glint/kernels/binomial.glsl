@@ -919,14 +919,17 @@ GLINT_FN_OUT_OF_LINE vec2 glint_binomial_two_sided_fit(real N, real p_near) {
 }
 
 // Whether the middle's (t, sigma) come without the ends (glint_binomial_middle_fit): N from 4 (up to
-// N = 4 the two-point law needs the middle's mean) to 32, from the far bound's table, and from
-// N p_near = 17 on, in closed form. (A 128 x 13 table of the exact one-sided fit for N >= 32 and
-// N p_near from 2^-7 to 17 made the CPU sampler about 1.6x faster there, but its constant array
-// made the GLSL frames of examples/gl/glint_gl on llvmpipe 2x slower: dropped.)
+// N = 4 the two-point law needs the middle's mean) to 32, from the far bound's table; from N = 32
+// on, in closed form where N p_near >= 2^-7 (below, the middle is drawn with probability under
+// about N p_near, and its parameters come from the ends). (A 128 x 13 table of the exact
+// one-sided fit for N >= 32 and N p_near from 2^-7 to 17 made the CPU sampler about 1.6x faster
+// there, but its constant array made the GLSL frames of examples/gl/glint_gl on llvmpipe 2x
+// slower: glint_binomial_band_fit_scaled's polynomials replaced it.)
 GLINT_CONST(real) GLINT_BINOMIAL_BUSY_LAMBDA = real(17);
+GLINT_CONST(real) GLINT_BINOMIAL_BAND_LAMBDA_MIN = real(0.0078125);  // 2^-7
 
 GLINT_FN bool glint_binomial_middle_needs_no_ends(real N, real p_near) {
-    return N >= real(4) && (N < GLINT_BINOMIAL_FAR_N_MAX || N * p_near >= GLINT_BINOMIAL_BUSY_LAMBDA);
+    return N >= real(4) && (N < GLINT_BINOMIAL_FAR_N_MAX || N * p_near >= GLINT_BINOMIAL_BAND_LAMBDA_MIN);
 }
 
 // From lambda = N p_near = 17 on (then N >= 34) the ends weigh less than exp(-17) = 4.1e-8 against
@@ -963,8 +966,134 @@ GLINT_FN vec3 glint_binomial_busy_fit(real lambda, real p_near) {
     return vec3(t, sigma, sigma * t);
 }
 
+// The one-sided fit for N >= 32 and lambda = N p_near from 2^-7 to 17 (where the far bound removes
+// less than 1e-8 of the middle's mean), without the ends: ((sigma t - (lambda - 1)) / sqrt(lambda),
+// sigma / sqrt(lambda (1 - p_near))) as polynomials in x = log2(lambda) and q = 32 / N, four
+// pieces in x. The digits come from bench/fit_binomial_band.cpp (Chebyshev interpolation of the
+// exact fit, written in powers), which also measures what they leave over the band: the centre
+// sigma t within 6.4e-6 sigma, sigma within 9.0e-6 (relative), the offset's mean within 2.7e-6 and
+// its variance within 1.8e-5 of their targets (relative). A unit test checks the kernel against
+// the exact fit. In GLSL their code costs time even where no draw reaches it: examples/gl/glint_gl's
+// IBL K = 4 frames (all draws N < 32) at 192 x 120 on llvmpipe took 345 to 372 ms without it and
+// 378 to 413 ms with it in alternating runs (the sampler fixed by GLINT_BINOMIAL_VARIANT).
+// generated: GLINT_BINOMIAL_BAND_FIT by bench/fit_binomial_band.cpp
+GLINT_FN vec2 glint_binomial_band_fit_scaled(real x, real q) {
+    real r = real(2) * q - real(1);
+    if (x < real(-3.5)) {
+        real s = (x - real(-5.25)) * real(0.5714285714285714);
+        vec2 r0 = vec2(real(-0.00578719517), real(0.00122846472));
+        r0 = vec2(real(0.0495187567), real(-0.0114889161)) + s * r0;
+        r0 = vec2(real(-0.330219664), real(0.0863400027)) + s * r0;
+        r0 = vec2(real(1.74137784), real(-0.51957096)) + s * r0;
+        r0 = vec2(real(-6.4674343), real(2.33857976)) + s * r0;
+        r0 = vec2(real(13.910986), real(-6.61220459)) + s * r0;
+        r0 = vec2(real(-12.333276), real(9.21376731)) + s * r0;
+        vec2 r1 = vec2(real(-6.19847755e-06), real(1.15312848e-06));
+        r1 = vec2(real(6.15150246e-05), real(-3.50545537e-06)) + s * r1;
+        r1 = vec2(real(-0.000584791833), real(5.71941919e-05)) + s * r1;
+        r1 = vec2(real(0.00331107124), real(-0.000406580779)) + s * r1;
+        r1 = vec2(real(-0.0173109012), real(0.00171113555)) + s * r1;
+        r1 = vec2(real(0.0598593294), real(-0.00926998291)) + s * r1;
+        r1 = vec2(real(-0.0793162439), real(0.0123913266)) + s * r1;
+        vec2 r2 = vec2(real(-8.59284747e-08), real(-1.09009978e-09));
+        r2 = vec2(real(4.19599592e-07), real(-8.38877608e-08)) + s * r2;
+        r2 = vec2(real(-4.3805184e-06), real(2.49781116e-07)) + s * r2;
+        r2 = vec2(real(2.86006582e-05), real(-3.36869219e-06)) + s * r2;
+        r2 = vec2(real(-0.000131787654), real(1.42535003e-05)) + s * r2;
+        r2 = vec2(real(0.000471509499), real(-5.99075966e-05)) + s * r2;
+        r2 = vec2(real(-0.000693618568), real(0.000109222814)) + s * r2;
+        return r0 + r * (r1 + r * (r2));
+    }
+    if (x < real(0)) {
+        real s = (x - real(-1.75)) * real(0.5714285714285714);
+        vec2 r0 = vec2(real(-0.00119413826), real(0.000213972222));
+        r0 = vec2(real(0.0126924671), real(-0.00334237344)) + s * r0;
+        r0 = vec2(real(-0.06962748), real(0.0229496164)) + s * r0;
+        r0 = vec2(real(0.376485373), real(-0.135523225)) + s * r0;
+        r0 = vec2(real(-1.11979437), real(0.619448328)) + s * r0;
+        r0 = vec2(real(1.37431907), real(-1.44323151)) + s * r0;
+        r0 = vec2(real(-0.480710426), real(2.27193921)) + s * r0;
+        vec2 r1 = vec2(real(2.26384489e-05), real(4.39935304e-06));
+        r1 = vec2(real(0.000106865894), real(2.91094619e-05)) + s * r1;
+        r1 = vec2(real(-4.17786713e-05), real(0.000137970106)) + s * r1;
+        r1 = vec2(real(0.00061603145), real(0.000163387961)) + s * r1;
+        r1 = vec2(real(-0.00750297587), real(0.000703137859)) + s * r1;
+        r1 = vec2(real(0.0156794442), real(-0.00550015884)) + s * r1;
+        r1 = vec2(real(-0.0100616754), real(-0.00167243226)) + s * r1;
+        vec2 r2 = vec2(real(6.88293353e-07), real(8.64690472e-07));
+        r2 = vec2(real(4.42385268e-07), real(1.8813713e-06)) + s * r2;
+        r2 = vec2(real(-6.00117134e-06), real(1.46816331e-06)) + s * r2;
+        r2 = vec2(real(-5.72707894e-06), real(-2.8280847e-06)) + s * r2;
+        r2 = vec2(real(-5.4850334e-05), real(-5.27050297e-06)) + s * r2;
+        r2 = vec2(real(0.000162979308), real(-4.15136285e-05)) + s * r2;
+        r2 = vec2(real(-0.00011148088), real(2.08457804e-05)) + s * r2;
+        return r0 + r * (r1 + r * (r2));
+    }
+    if (x < real(2)) {
+        real s = (x - real(1)) * real(1);
+        vec2 r0 = vec2(real(-0.000143962013), real(0.000202916944));
+        r0 = vec2(real(-0.00128905653), real(0.000226781092)) + s * r0;
+        r0 = vec2(real(-0.00534810357), real(-0.000196152663)) + s * r0;
+        r0 = vec2(real(0.0250645199), real(-0.0137156374)) + s * r0;
+        r0 = vec2(real(-0.000445247175), real(0.0638852972)) + s * r0;
+        r0 = vec2(real(-0.0679298286), real(-0.137309837)) + s * r0;
+        r0 = vec2(real(0.0539563853), real(1.11776219)) + s * r0;
+        vec2 r1 = vec2(real(-2.16266304e-05), real(1.61418876e-05));
+        r1 = vec2(real(-0.000128005622), real(-7.26477461e-06)) + s * r1;
+        r1 = vec2(real(-0.00014189117), real(-0.000106809329)) + s * r1;
+        r1 = vec2(real(0.000578125715), real(3.69214402e-05)) + s * r1;
+        r1 = vec2(real(0.000207220212), real(0.00124596233)) + s * r1;
+        r1 = vec2(real(0.000348620843), real(0.000434526771)) + s * r1;
+        r1 = vec2(real(-0.00042622486), real(-0.00682564863)) + s * r1;
+        vec2 r2 = vec2(real(-1.46052304e-06), real(-1.62337345e-07));
+        r2 = vec2(real(-5.60319251e-06), real(-2.08775714e-06)) + s * r2;
+        r2 = vec2(real(-2.75936215e-06), real(-7.53402981e-07)) + s * r2;
+        r2 = vec2(real(1.32460621e-05), real(1.9516325e-05)) + s * r2;
+        r2 = vec2(real(-5.82832035e-06), real(5.53605355e-05)) + s * r2;
+        r2 = vec2(real(-3.25926217e-05), real(3.56975939e-05)) + s * r2;
+        r2 = vec2(real(-2.88382083e-05), real(-2.586205e-05)) + s * r2;
+        return r0 + r * (r1 + r * (r2));
+    }
+    real s = (x - real(3.0437314206251695)) * real(0.95810088710467722);
+    vec2 r0 = vec2(real(0.000743992058), real(-0.00038386024));
+    r0 = vec2(real(-0.000854638961), real(0.000736122561)) + s * r0;
+    r0 = vec2(real(-0.00232878104), real(0.00120407691)) + s * r0;
+    r0 = vec2(real(0.00495435553), real(-0.00143398347)) + s * r0;
+    r0 = vec2(real(-0.00233800081), real(-0.00639705207)) + s * r0;
+    r0 = vec2(real(-0.00158159591), real(0.0135301295)) + s * r0;
+    r0 = vec2(real(0.00199008697), real(-0.00985050191)) + s * r0;
+    r0 = vec2(real(-0.000584994157), real(1.00259894)) + s * r0;
+    vec2 r1 = vec2(real(0.000222339071), real(-0.000345371613));
+    r1 = vec2(real(0.000160224419), real(-4.4309575e-05)) + s * r1;
+    r1 = vec2(real(-0.000820620044), real(0.00112530022)) + s * r1;
+    r1 = vec2(real(-0.000345924467), real(0.000392592331)) + s * r1;
+    r1 = vec2(real(0.0013953827), real(-0.00180887386)) + s * r1;
+    r1 = vec2(real(-8.79708896e-05), real(-0.00130736176)) + s * r1;
+    r1 = vec2(real(-0.00100236682), real(0.00362039479)) + s * r1;
+    r1 = vec2(real(0.000485049454), real(-0.00165434118)) + s * r1;
+    vec2 r2 = vec2(real(1.53767019e-05), real(-0.000123269438));
+    r2 = vec2(real(7.6606893e-05), real(-0.000116665182)) + s * r2;
+    r2 = vec2(real(-2.17654858e-05), real(0.000294103517)) + s * r2;
+    r2 = vec2(real(-0.000211700437), real(0.000377840289)) + s * r2;
+    r2 = vec2(real(-1.89040265e-05), real(-0.000200919799)) + s * r2;
+    r2 = vec2(real(0.000223807255), real(-0.000494934009)) + s * r2;
+    r2 = vec2(real(5.47774309e-05), real(-9.34861403e-07)) + s * r2;
+    r2 = vec2(real(-0.000122858189), real(0.000284706303)) + s * r2;
+    return r0 + r * (r1 + r * (r2));
+}
+// end of generated code
+
+// (t, sigma, sigma t) of the band's middle: a log2, a division, two sqrt, and the polynomials.
+GLINT_FN vec3 glint_binomial_band_fit(real N, real p_near) {
+    real lambda = N * p_near;
+    vec2 f = glint_binomial_band_fit_scaled(log2(lambda), real(32) / N);
+    real centre = (lambda - real(1)) + f.x * sqrt(lambda);
+    real sigma = f.y * sqrt(lambda * (real(1) - p_near));
+    return vec3(centre / sigma, sigma, centre);
+}
+
 // (t, sigma, sigma t) of the middle where glint_binomial_middle_needs_no_ends: the far bound's table
-// below N = 32, glint_binomial_busy_fit from lambda = 17 on.
+// below N = 32, the band's polynomials up to lambda = 17, glint_binomial_busy_fit from there on.
 GLINT_FN vec3 glint_binomial_middle_fit(real N, real p_near) {
     real lambda = N * p_near;
     if (N < GLINT_BINOMIAL_FAR_N_MAX) {
@@ -972,6 +1101,7 @@ GLINT_FN vec3 glint_binomial_middle_fit(real N, real p_near) {
         real sigma = sqrt(lambda) * exp(f.y);
         return vec3(f.x, sigma, sigma * f.x);
     }
+    if (lambda < GLINT_BINOMIAL_BUSY_LAMBDA) return glint_binomial_band_fit(N, p_near);
     return glint_binomial_busy_fit(lambda, p_near);
 }
 

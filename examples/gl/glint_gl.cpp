@@ -109,11 +109,17 @@ GLuint compile(GLenum type, const std::string& source, const std::string& what) 
     return shader;
 }
 
+// The binomial sampler the shaders are compiled for: the showcase's (lights_scene.hpp).
+constexpr glint::binomial_variant shader_variant = glint::binomial_variant::unbiased;
+
 // A program from a vertex and a fragment shader; the fragment shader gets the glint kernel files
 // (in glint::glsl_kernel_names() order) and common.glsl first, with the given #defines.
 GLuint program(const std::string& vertex, const std::string& fragment, bool ibl, bool gbuffer) {
     const std::string version = "#version 450\n";
     std::string fs = version + "#define GLINT_GL_IBL " + (ibl ? "1" : "0") + "\n#define GLINT_GL_GBUFFER " + (gbuffer ? "1" : "0") + "\n";
+    // The one sampler glint_gl draws with (set_grid checks the grid's), known to the compiler.
+    fs += "#define GLINT_BINOMIAL_VARIANT " + std::to_string(static_cast<int>(shader_variant)) + "\n#define GLINT_BINOMIAL_POW_METHOD " +
+          std::to_string(static_cast<int>(glint::published_pow_method(shader_variant))) + "\n";
     for (const auto name : glint::glsl_kernel_names()) fs += glint::glsl_source(name);
     fs += glint_gl::shader_source("common.glsl");
     fs += glint_gl::shader_source(fragment);
@@ -139,6 +145,8 @@ void set(GLuint p, const char* name, const vec2& v) { glProgramUniform2f(p, glGe
 void set(GLuint p, const char* name, const vec3& v) { glProgramUniform3f(p, glGetUniformLocation(p, name), v.x, v.y, v.z); }
 
 void set_grid(GLuint p, const glint::grid_params<float>& g) {
+    if (g.variant != shader_variant)
+        throw std::runtime_error("glint_gl: the shaders are compiled for one binomial variant and method (GLINT_BINOMIAL_VARIANT)");
     const auto k = glint::detail::to_kernel(g);
     set(p, "u_grid.log_density", k.log_density);
     set(p, "u_grid.density_sigma", k.density_sigma);

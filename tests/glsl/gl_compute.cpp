@@ -251,7 +251,7 @@ std::vector<std::uint32_t> gl_compute::run(unsigned prog, const std::vector<std:
 std::string shader_header(const std::vector<std::string>& kernel_files) {
     std::string s = "#version 450\nlayout(local_size_x = " + std::to_string(local_size) + ") in;\n";
     s += glint::glsl_source("prelude.glsl");
-    for (const std::string& f : kernel_files) s += glint::glsl_source(f);
+    for (const std::string& f : kernel_files) s += (f.rfind("#define ", 0) == 0) ? f + "\n" : std::string(glint::glsl_source(f));
     return s;
 }
 

@@ -53,7 +53,8 @@ private:
 constexpr unsigned local_size = 64;
 constexpr unsigned max_groups = 65535;
 
-// "#version 450", the local size, and the given glint kernel files, in order.
+// "#version 450", the local size, and the given glint kernel files, in order (an entry that
+// starts with "#define " is a line of its own, for the kernels' configuration macros).
 std::string shader_header(const std::vector<std::string>& kernel_files);
 
 template <class T>

@@ -78,6 +78,45 @@ TEST_CASE("binomial kernels: GLSL against C++ over the grid, 256 uniform pairs p
     }
 }
 
+TEST_CASE("binomial kernels: GLINT_BINOMIAL_VARIANT and _POW_METHOD fix the sampler of glint_binomial_variant and _cached") {
+    // The shader asks for the ungated sampler with the naive method at run time; with the macros
+    // defined (the mean-preserving sampler, log1p) both entry points must draw as C++'s
+    // binomial_unbiased, within the same flip rate as the test above. Without them the same shader
+    // draws the ungated sampler, which the comparison must catch.
+    std::vector<std::uint32_t> in;
+    std::vector<float> Ns, ps, u1s, u2s;
+    for (double N : gt::binomial_grid_n())
+        for (double p : gt::binomial_grid_p())
+            for (std::uint32_t s = 0; s < 16; ++s) {
+                const glm::uvec3 h = glint::pcg3d(glm::uvec3(s, 0x5bu, static_cast<std::uint32_t>(Ns.size())));
+                Ns.push_back(static_cast<float>(N)), ps.push_back(static_cast<float>(p));
+                u1s.push_back(glint::open_unit_from_bits<float>(h.x)), u2s.push_back(glint::open_unit_from_bits<float>(h.y));
+                glint_test::append_words(in, {Ns.back(), ps.back(), u1s.back(), u2s.back()});
+            }
+    const std::string body =
+        "float N = in_float(4u*i), p = in_float(4u*i+1u), u1 = in_float(4u*i+2u), u2 = in_float(4u*i+3u);"
+        " glint_binomial r = glint_binomial_variant(0, N, p, u1, u2, 0);"
+        " glint_binomial_cache cache = glint_binomial_empty_cache();"
+        " glint_binomial c = glint_binomial_variant_cached(0, N, p, u1, u2, 0, cache);"
+        " out0[2u*i] = floatBitsToUint(r.positive); out0[2u*i+1u] = floatBitsToUint(c.positive);";
+    for (bool fixed : {true, false}) {
+        std::vector<std::string> files = {"core.glsl", "binomial.glsl"};
+        if (fixed) files.insert(files.begin(), {"#define GLINT_BINOMIAL_VARIANT 4", "#define GLINT_BINOMIAL_POW_METHOD 2"});
+        const auto gpu = glint_test::from_words<float>(glint_test::map_words(files, body, in, Ns.size(), 2));
+        parity s;
+        for (std::size_t i = 0; i < Ns.size(); ++i) {
+            const auto c = glint::binomial_unbiased(Ns[i], ps[i], u1s[i], u2s[i]);
+            tally(s, gpu[2 * i], c.positive, Ns[i]);
+            tally(s, gpu[2 * i + 1], c.positive, Ns[i]);
+        }
+        const double rate = static_cast<double>(s.flips) / static_cast<double>(s.count);
+        MESSAGE(std::string(fixed ? "fixed by the macros" : "without them (ungated)") << ": " << s.count << " counts, " << s.identical << " identical, "
+                                                                          << s.flips << " flipped (rate " << rate << ")");
+        if (fixed) CHECK(rate <= BINOMIAL_GLSL_MAX_FLIP_RATE);
+        else CHECK(rate > 0.1);
+    }
+}
+
 TEST_CASE("multinomial kernel: GLSL against C++, K = 4 and 8") {
     for (int K : {4, 8}) {
         const std::size_t n = 65536;

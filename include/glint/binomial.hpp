@@ -88,9 +88,8 @@
 // drawn, its setup (step 4) costs a table read (N < 32: a log2, two sqrt and 16 node pairs, and
 // an exp), a log2, two sqrt and 21 to 24 polynomial terms per output in the band, or a sqrt and
 // two polynomials from N p = 17 on; elsewhere the ends (a log1p and an exp), the moments, and the
-// one-sided fit (a log, two polynomials, an exp). The table read, and the mean-preserving
-// sampler past its near-end shortcut, are out of line in C++: inlined, they slowed the
-// sampler's other paths. Measured against Alg. 1 and
+// one-sided fit (a log, two polynomials, an exp). The table read is
+// out of line in C++: inlined, it slowed the sampler's other paths. Measured against Alg. 1 and
 // std::binomial_distribution: docs/binomial.md.
 #pragma once
 

@@ -1186,12 +1186,16 @@ GLINT_FN glint_binomial glint_binomial_unbiased_small(real N, real p, real u1) {
     return glint_binomial_pair(g.positive_fixed + g.gaussian, g.negative_fixed + g.gaussian);
 }
 
-// glint_binomial_unbiased past its near-end shortcut, for N > 2 (N and p clamped). Out of line in
-// C++: inlined, its code made the shortcut's callers slower (at N = 100, p = 1e-8: 3.4 to 3.9 ns
-// per draw against KK25 Alg. 1's 2.9 ns, and 3.2 ns out of line, google benchmark on this machine;
-// it costs the draws that reach it 32 instructions, and the IBL estimate and the point-light frame
-// of bench/frame_loop.cpp counted 1.2% and 0.8% fewer instructions).
-GLINT_FN_OUT_OF_LINE glint_binomial glint_binomial_unbiased_beyond_near_end(real N, real p, real u1, real u2, int method) {
+// The mean-preserving dual-gated sampler: KK25 Alg. 1's gates (exact for N <= 2), and for N > 2
+// a middle part whose mean is E[n | 1 <= n <= N - 1] exactly and whose variance matches the
+// binomial's on that event (glint/binomial.hpp derives it). With the same result as the
+// straight-line evaluation, it skips every transcendental where the near-end gate surely fires
+// (glint_binomial_surely_near_end) and for N <= 2, and the ends' where both are subnormal.
+GLINT_FN glint_binomial glint_binomial_unbiased(real N, real p, real u1, real u2, int method) {
+    N = clamp(N, real(0), GLINT_BINOMIAL_MAX_N);
+    p = clamp(p, real(0), real(1));
+    if (glint_binomial_surely_near_end(N, p, u1, method)) return glint_binomial_near_end(N, p);
+    if (N <= real(2)) return glint_binomial_unbiased_small(N, p, u1);
     // Where u1 is surely above p^N and below 1 - (1 - p)^N, no gate fires, and where the middle's
     // parameters come from a table or the closed form, the ends are not needed at all: they are
     // taken as 0, which decides the gates alike. The bounds are glint_binomial_dual_gated's with
@@ -1221,19 +1225,6 @@ GLINT_FN_OUT_OF_LINE glint_binomial glint_binomial_unbiased_beyond_near_end(real
     real G = real(1);
     if (g.gaussian > real(0.5)) G = glint_binomial_unbiased_middle(glint_binomial_unbiased_middle_setup(N, p, e), N, u2);
     return glint_binomial_pair(g.positive_fixed + g.gaussian * G, g.negative_fixed + g.gaussian * (N - G));
-}
-
-// The mean-preserving dual-gated sampler: KK25 Alg. 1's gates (exact for N <= 2), and for N > 2
-// a middle part whose mean is E[n | 1 <= n <= N - 1] exactly and whose variance matches the
-// binomial's on that event (glint/binomial.hpp derives it). With the same result as the
-// straight-line evaluation, it skips every transcendental where the near-end gate surely fires
-// (glint_binomial_surely_near_end) and for N <= 2, and the ends' where both are subnormal.
-GLINT_FN glint_binomial glint_binomial_unbiased(real N, real p, real u1, real u2, int method) {
-    N = clamp(N, real(0), GLINT_BINOMIAL_MAX_N);
-    p = clamp(p, real(0), real(1));
-    if (glint_binomial_surely_near_end(N, p, u1, method)) return glint_binomial_near_end(N, p);
-    if (N <= real(2)) return glint_binomial_unbiased_small(N, p, u1);
-    return glint_binomial_unbiased_beyond_near_end(N, p, u1, u2, method);
 }
 
 // The mean-preserving sampler's parameters at one (N, p), kept between draws that share them (the

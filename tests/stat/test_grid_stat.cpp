@@ -5,7 +5,8 @@
 // resolution (a 10% bias detected with probability 0.9); family-wise alpha 0.01, Sidak. Where
 // the footprint holds so many microfacets that the standard error falls below float rounding,
 // a deviation must also exceed 1e-5 (about 80 float ulps: R sums up to 48 rounded terms).
-// The same grid with the published gated sampler (DB23) must reject somewhere. KK25 Fig. 14:
+// Every 4th test of the same grid with the published gated sampler (DB23) and KK25's
+// dual-gated one must reject somewhere. KK25 Fig. 14:
 // a sun on a low-roughness plane seen at a grazing angle, no banding across LODs and
 // convergence to the smooth result as density grows. The GGX visible-normal sampler against
 // its density (chi-square), with power against a 5% roughness error.
@@ -69,11 +70,13 @@ struct grid_test_result {
     grid_scene scene;
 };
 
-std::vector<grid_test_result> run_grid(glint::binomial_variant v, double alpha_each, std::size_t& total_samples) {
+// The grid's tests, or every stride-th of them (each with the seeds it has in the whole grid).
+std::vector<grid_test_result> run_grid(glint::binomial_variant v, double alpha_each, std::size_t& total_samples, std::uint32_t stride = 1) {
     std::vector<grid_test_result> out;
     std::uint32_t salt = 0;
     for (const grid_scene& s : unbiasedness_grid(v)) {
         ++salt;
+        if ((salt - 1) % stride != 0) continue;
         gt::running_moments m;
         const std::size_t n = samples_for(s);
         for (std::size_t i = 0; i < n; ++i) {
@@ -113,12 +116,15 @@ TEST_CASE("grid: the mean-preserving glint NDF is unbiased for every light, roug
     CHECK(rejected == 0);
 }
 
+// Power: every 4th test of the grid, at the whole grid's level per test. (The whole grid took 15 s
+// here and 222 s under the sanitizers, and rejected 289 of 516 tests for DB23 and 255 for Alg. 1;
+// a quarter shows the same at a quarter of the cost.)
 TEST_CASE("grid: the same test rejects the published gated sampler (DB23) and KK25's dual-gated one") {
     for (glint::binomial_variant v : {glint::binomial_variant::gated_db23, glint::binomial_variant::dual_gated}) {
         const std::size_t tests = unbiasedness_grid(v).size();
         const double alpha_each = gt::sidak_alpha(0.01, static_cast<int>(tests));
         std::size_t samples = 0;
-        const auto results = run_grid(v, alpha_each, samples);
+        const auto results = run_grid(v, alpha_each, samples, 4);
         int rejected = 0;
         const grid_test_result* worst = nullptr;
         for (const auto& r : results) {
@@ -126,7 +132,8 @@ TEST_CASE("grid: the same test rejects the published gated sampler (DB23) and KK
             if (!worst || std::fabs(r.test.mean - 1) > std::fabs(worst->test.mean - 1)) worst = &r;
         }
         REQUIRE(worst);
-        MESSAGE(std::string(glint::name(v)) << ": " << rejected << " of " << results.size() << " configurations rejected; worst " << worst->scene.describe()
+        MESSAGE(std::string(glint::name(v)) << ": " << rejected << " of " << results.size() << " configurations (every 4th of " << tests
+                                       << ") rejected; worst " << worst->scene.describe()
                                << ": mean " << worst->test.mean << " +- " << worst->test.standard_error);
         CHECK(rejected > 0);
     }

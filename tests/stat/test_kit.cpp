@@ -13,6 +13,7 @@
 #include <vector>
 
 #include <glint/core.hpp>
+#include <glint/testing/directional.hpp>
 #include <glint/testing/stats.hpp>
 
 namespace gt = glint::testing;
@@ -185,4 +186,21 @@ TEST_CASE("a gate off by one trial: KS at the half-integers rejects it") {
     CHECK(ks_small.rejects(alpha));
     auto chi = gt::chi_square(histogram(t, n_small), pmf(n_small, 0.3));
     CHECK(chi.rejects(alpha));
+}
+
+TEST_CASE("directional chi-square: precomputed cell probabilities give the same test; a wrong cell count is an error") {
+    // Uniform points on the unit disk (r = sqrt(u)) against the uniform density 1 / pi.
+    std::vector<glm::dvec3> points;
+    for (std::uint32_t i = 0; i < 4000; ++i) {
+        const glm::uvec3 h = glint::pcg3d(glm::uvec3(i, 0xd15cu, 7u));
+        const double r = std::sqrt(glint::unit_from_bits<double>(h.x)), phi = 6.283185307179586 * glint::unit_from_bits<double>(h.y);
+        points.emplace_back(r * std::cos(phi), r * std::sin(phi), 0.0);
+    }
+    const auto density = [](const glm::dvec3&) { return 0.3183098861837907; };
+    const auto direct = glint::testing::directional_chi_square(glint::testing::domain::disk, 8, 8, density, points, 0);
+    const auto cells = glint::testing::cell_probabilities(glint::testing::domain::disk, 8, 8, density);
+    const auto reused = glint::testing::directional_chi_square(glint::testing::domain::disk, 8, 8, cells, points, 0);
+    CHECK(reused.chi2.statistic == direct.chi2.statistic);
+    CHECK(reused.chi2.p_value == direct.chi2.p_value);
+    CHECK_THROWS_AS(glint::testing::directional_chi_square(glint::testing::domain::disk, 8, 9, cells, points, 0), std::invalid_argument);
 }

@@ -21,6 +21,7 @@
 #include <functional>
 #include <sstream>
 #include <stdexcept>
+#include <string>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -115,12 +116,16 @@ inline int cell_of(domain d, int t_cells, int phi_cells, const glm::dvec3& v) {
     return i * phi_cells + j;
 }
 
-// The test of `samples` (domain points; failed draws counted in `failures`) against `density`.
-inline directional_result directional_chi_square(domain d, int t_cells, int phi_cells, const std::function<double(const glm::dvec3&)>& density,
-                                                 const std::vector<glm::dvec3>& samples, std::size_t failures, double min_expected = 5.0,
-                                                 int depth = 4) {
+// The test of `samples` (domain points; failed draws counted in `failures`) against the cells'
+// probabilities from cell_probabilities (so that several samplers judged against one density pay
+// for its quadrature once).
+inline directional_result directional_chi_square(domain d, int t_cells, int phi_cells, const std::vector<double>& cell_probability,
+                                                 const std::vector<glm::dvec3>& samples, std::size_t failures, double min_expected = 5.0) {
+    if (cell_probability.size() != static_cast<std::size_t>(t_cells) * static_cast<std::size_t>(phi_cells))
+        throw std::invalid_argument("glint::testing::directional_chi_square: " + std::to_string(cell_probability.size()) + " cell probabilities for " +
+                                    std::to_string(t_cells) + " x " + std::to_string(phi_cells) + " cells");
     directional_result r;
-    r.expected_probability = cell_probabilities(d, t_cells, phi_cells, density, depth);
+    r.expected_probability = cell_probability;
     for (const double p : r.expected_probability) r.integral += p;
     if (!(r.integral <= 1 + 1e-3)) {
         std::ostringstream m;
@@ -140,6 +145,13 @@ inline directional_result directional_chi_square(domain d, int t_cells, int phi_
     r.observed.back() += static_cast<double>(failures);
     r.chi2 = chi_square(r.observed, r.expected_probability, min_expected);
     return r;
+}
+
+// The test of `samples` against `density`, integrated over the cells with at most `depth` splits.
+inline directional_result directional_chi_square(domain d, int t_cells, int phi_cells, const std::function<double(const glm::dvec3&)>& density,
+                                                 const std::vector<glm::dvec3>& samples, std::size_t failures, double min_expected = 5.0,
+                                                 int depth = 4) {
+    return directional_chi_square(d, t_cells, phi_cells, cell_probabilities(d, t_cells, phi_cells, density, depth), samples, failures, min_expected);
 }
 
 }  // namespace testing

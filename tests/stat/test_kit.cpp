@@ -188,7 +188,7 @@ TEST_CASE("a gate off by one trial: KS at the half-integers rejects it") {
     CHECK(chi.rejects(alpha));
 }
 
-TEST_CASE("directional chi-square: precomputed cell probabilities give the same test; a wrong cell count is an error") {
+TEST_CASE("directional chi-square: precomputed cell probabilities give the same test, and a wrong cell count is an error") {
     // Uniform points on the unit disk (r = sqrt(u)) against the uniform density 1 / pi.
     std::vector<glm::dvec3> points;
     for (std::uint32_t i = 0; i < 4000; ++i) {

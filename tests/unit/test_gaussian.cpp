@@ -292,6 +292,35 @@ TEST_CASE("P-NDF: the hierarchy's s-boxes hold every nonzero term, point footpri
     }
 }
 
+// term_count on a constant tilt (J = 0, every lobe N(s0, sigma_r^2 I)): at s0 every element in the
+// culling ellipse has a term (the lattice points with (u - mu)^T K^-1 (u - mu) < cull_u^2, K the
+// footprint's covariance plus sigma_h^2 I, counted here over a wide box with periodic images), at
+// cull_s sigma_r (1 + 1e-6) from s0 none.
+TEST_CASE("P-NDF: term_count counts the elements of the culling ellipse whose lobes reach s") {
+    glint::pattern_params pp;
+    pp.kind = glint::pattern::tilt, pp.width = pp.height = 32;
+    const glint::normal_map map = glint::make_normal_map(pp);
+    glint::gaussian_params<double> g;
+    g.sigma_r = 0.01;
+    const auto pndf = glint::gaussian_pndf<double>::build(map, g);
+    const glm::dvec3 n0 = glm::normalize(glm::dvec3(map.texel(0, 0)));
+    const glm::dvec2 s0(n0.x, n0.y);
+    for (const double sigma : {0.0, 0.7, 3.0, 11.0}) {
+        const auto fp = footprint({3.3, 17.1}, covariance(sigma, sigma * 0.6, 1.1));
+        const glm::dmat2 k_inv = glm::inverse(fp.covariance + glm::dmat2(pndf.sigma_h() * pndf.sigma_h()));
+        std::size_t inside = 0;
+        for (int j = -80; j < 112; ++j)
+            for (int i = -80; i < 112; ++i) {
+                const glm::dvec2 d = glm::dvec2(i + 0.5, j + 0.5) - fp.center;
+                inside += glm::dot(d, k_inv * d) < g.cull_u * g.cull_u;
+            }
+        CAPTURE(sigma);
+        CHECK(pndf.term_count(fp, s0) == inside);
+        CHECK(pndf.term_count(fp, s0 + glm::dvec2(g.cull_s * g.sigma_r * (1 + 1e-6), 0)) == 0u);
+        CHECK(pndf.term_count(fp, s0 + glm::dvec2(g.cull_s * g.sigma_r * (1 - 1e-6), 0)) == inside);
+    }
+}
+
 // Without the hierarchy (pndf_hierarchy::none: for maps rough at the texel scale, where it never
 // pays) eval gives the same values in a fraction of the memory.
 TEST_CASE("P-NDF: without the hierarchy eval is the same, in less memory") {

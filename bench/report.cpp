@@ -1,12 +1,15 @@
 // The accuracy-versus-time report: every kernel and knob of glint with its error against an
 // exact reference and its time per call, measured with Google Benchmark in the same run.
-// Prints markdown; with --docs DIR also writes the tables, CSVs and plots into DIR.
+// Prints markdown; with --docs DIR also writes the tables, CSVs and plots into DIR. With --only,
+// the sections' rows replace theirs (by the first column) in DIR's accuracy_vs_time.csv.
 //
 //   glint_report [--docs DIR] [--min-time SECONDS] [--only core|binomial|grid|ibl|microstructure|scratch|ndf_map|bin_map|lobe_tree]
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
+#include <set>
+#include <sstream>
 #include <string>
 
 #include "report.hpp"
@@ -50,7 +53,28 @@ int main(int argc, char** argv) {
         }
         std::printf("wrote %s/%s\n", docs.c_str(), name.c_str());
     };
-    if (only.empty()) write("accuracy_vs_time.csv", csv);
+    if (only.empty()) {
+        write("accuracy_vs_time.csv", csv);
+    } else {
+        // The rows of the sections run replace those with the same first column, where those were.
+        const auto key = [](const std::string& line) { return line.substr(0, line.find(',')); };
+        std::set<std::string> keys;
+        std::string rows;
+        for (const auto& s : sections) rows += s.csv_rows;
+        std::istringstream fresh(rows);
+        for (std::string line; std::getline(fresh, line);) keys.insert(key(line));
+        std::ifstream in(docs + "/accuracy_vs_time.csv");
+        std::string merged, line;
+        bool placed = false;
+        if (std::getline(in, line)) merged = line + "\n";
+        else merged = glint_report::csv_header;
+        while (std::getline(in, line)) {
+            if (!keys.count(key(line))) merged += line + "\n";
+            else if (!placed) merged += rows, placed = true;
+        }
+        if (!placed) merged += rows;
+        write("accuracy_vs_time.csv", merged);
+    }
     for (const auto& s : sections)
         for (const auto& [name, content] : s.files) write(name, content);
     return 0;

@@ -52,7 +52,7 @@
 // lobes reaching it (on the flakes map of docs/microstructure.md at footprint sd 64: 13 visited and
 // 2.4 evaluated per one that contributes; term_count counts those). That count still grows with
 // the footprint's area at a fixed s (flakes: 123, 3620 and 243638 terms at sd 8, 64 and 512, at
-// 150 to 200 ns per term): an exact sum cannot do better, and only prefiltered node NDFs
+// 150 to 210 ns per term): an exact sum cannot do better, and only prefiltered node NDFs
 // (XTXW24's maps, ZXW's K-lobes) make the cost sublinear. (Summing nodes of equal lobes as one
 // moment-matched term saved nothing measurable there: 92% of the terms come from the flakes'
 // edges, whose lobes differ.) Where the lists would be longer than the footprint's lattice

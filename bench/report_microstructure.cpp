@@ -65,6 +65,7 @@ section microstructure_section(double min_time) {
            << fmt(static_cast<double>(glint::gaussian_pndf<float>::build(map, none).memory_bytes()) / texels, "%.0f") << " bytes per texel).\n\n";
         md << "| footprint sd (texels) | eval ns / query | brute force ns / query | speed-up | terms per query | eval ns / term | brute force ns / term | "
               "relative L1 error vs reference |\n|---|---|---|---|---|---|---|---|\n";
+        std::vector<double> sloped_share;  // per footprint size, of the terms
         for (const float sigma : {1.0f, 8.0f, 64.0f, 512.0f}) {
             const int n = sigma >= 512 ? 4 : 32;
             const auto q = queries(p, sigma, n);
@@ -85,9 +86,14 @@ section microstructure_section(double min_time) {
                 const double ref = static_cast<double>(pndf.eval_reference(x.fp, x.s));
                 l1 += std::fabs(static_cast<double>(pndf.eval(x.fp, x.s)) - ref), norm += ref;
             }
-            // The terms an exact sum must add (term_count), over the timed queries.
-            double terms = 0;
-            for (const auto& x : q) terms += static_cast<double>(pndf.term_count(x.fp, x.s));
+            // The terms an exact sum must add (term_count), over the timed queries, and those of
+            // elements whose Jacobian is not 0 (on flakes: the cells' edges).
+            double terms = 0, sloped = 0;
+            for (const auto& x : q) {
+                terms += static_cast<double>(pndf.term_count(x.fp, x.s));
+                sloped += static_cast<double>(pndf.term_count(x.fp, x.s, [](const auto& el) { return el.jac != glm::vec4(0.0f); }));
+            }
+            sloped_share.push_back(sloped / std::max(terms, 1.0));
             terms /= static_cast<double>(q.size());
             const double h = ns.at("pndf_eval_" + tag), d = ns.at("pndf_direct_" + tag);
             md << "| " << sigma << " | " << fmt(h, "%.0f") << " | " << fmt(d, "%.0f") << " | " << fmt(d / h, "%.1f") << "x | " << fmt(terms, "%.0f") << " | "
@@ -95,6 +101,12 @@ section microstructure_section(double min_time) {
             out.csv_rows += "pndf," + std::string(glint::pattern_name(kind)) + " sigma_P=" + fmt(sigma) + ",float,relative L1 vs reference," + fmt(l1 / norm) +
                             "," + fmt(h) + "," + fmt(h / d) + ",brute force\n";
         }
+        std::size_t sloped_elements = 0;
+        for (std::size_t e = 0; e < pndf.element_count(); ++e) sloped_elements += pndf.element_data()[2 * e + 1] != glm::vec4(0.0f);
+        md << "\nTerms from elements whose Jacobian is not 0 (" << fmt(100.0 * static_cast<double>(sloped_elements) / texels, "%.0f")
+           << "% of the elements), at sd 1, 8, 64, 512:";
+        for (const double x : sloped_share) md << " " << fmt(100 * x, "%.0f") << "%";
+        md << ".\n";
         md << "\n";
     }
     const auto pndf = glint::gaussian_pndf<float>::build(map, g);  // noise, for the culling rows below

@@ -52,10 +52,10 @@
 // lobes reaching it (on the flakes map of docs/microstructure.md at footprint sd 64: 13 visited and
 // 2.4 evaluated per one that contributes; term_count counts those). That count still grows with
 // the footprint's area at a fixed s (flakes: 123, 3620 and 243638 terms at sd 8, 64 and 512, at
-// 150 to 210 ns per term): an exact sum cannot do better, and only prefiltered node NDFs
+// 150 to 260 ns per term): an exact sum cannot do better, and only prefiltered node NDFs
 // (XTXW24's maps, ZXW's K-lobes) make the cost sublinear. (Summing nodes of equal lobes as one
-// moment-matched term saved nothing measurable there: 92% of the terms come from the flakes'
-// edges, whose lobes differ.) Where the lists would be longer than the footprint's lattice
+// moment-matched term saved nothing measurable there: 91 to 92% of the terms from sd 64 on come
+// from the flakes' edges, whose lobes differ.) Where the lists would be longer than the footprint's lattice
 // (maps whose lobes are as wide as their normals' spread), eval sums the lattice directly instead;
 // such maps can leave the hierarchy out (gaussian_params::hierarchy). Footprints so wide that the
 // periodic images blur into the map's average (large_footprint below: error below 4e-8) use the
@@ -245,12 +245,19 @@ public:
 
     // How many elements have a nonzero term in eval_hierarchy's sum at s: the terms any exact
     // evaluation of the culled P-NDF must add (for cost per term; a lattice loop over the box).
+    // With `keep`, only the elements for which keep(element) is true (to see where terms come from).
     std::size_t term_count(const texel_footprint<real>& fp, const vec2& s) const {
+        return term_count(fp, s, [](const element&) { return true; });
+    }
+    template <class keep_t>
+    std::size_t term_count(const texel_footprint<real>& fp, const vec2& s, keep_t&& keep) const {
         if (!(s.x * s.x + s.y * s.y < real(1))) return 0;
         const frame f = prepare(fp);
         const params k = sampling_params();
         std::size_t n = 0;
-        for_each_in_box(f, k, [&](std::size_t, const element& el, const vec2& u) { n += kernels::glint_pndf_element(el, u, f, s, k) > real(0); });
+        for_each_in_box(f, k, [&](std::size_t, const element& el, const vec2& u) {
+            n += keep(el) && kernels::glint_pndf_element(el, u, f, s, k) > real(0);
+        });
         return n;
     }
 

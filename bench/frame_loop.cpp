@@ -6,6 +6,10 @@
 //                                          (sunset.exr); count it alone with
 //                                          --toggle-collect='glint_ibl_estimate*'
 //   glint_frame_loop draw N P              2e5 draws of glint::binomial_unbiased at (N, P)
+//   glint_frame_loop lights K MODE REPS    the report's several-lights workload
+//                                          (bench/light_pixels.hpp): its 1024 pixels with K
+//                                          lights, MODE 0 smooth, 1 one shared footprint, 2 a
+//                                          footprint per light, REPS times
 // Each prints a sum of its results, so that two builds can be checked to compute the same.
 #include <cstdio>
 #include <cstdlib>
@@ -16,6 +20,7 @@
 #include <glint/io/exr.hpp>
 
 #include "../examples/lights_scene.hpp"
+#include "light_pixels.hpp"
 
 #ifndef GLINT_DATA_DIR
 #error "GLINT_DATA_DIR must point at the project's data/ folder"
@@ -67,8 +72,13 @@ int main(int argc, char** argv) {
             const glm::uvec3 h = glint::pcg3d(glm::uvec3(i, 1u, 2u));
             sum += static_cast<double>(glint::binomial_unbiased(N, p, glint::open_unit_from_bits<float>(h.x), glint::open_unit_from_bits<float>(h.y)).positive);
         }
+    } else if (argc == 5 && !std::strcmp(mode, "lights")) {
+        const glint_bench::light_pixels lp;
+        const int k = std::atoi(argv[2]), shading = std::atoi(argv[3]);
+        for (int rep = 0; rep < std::atoi(argv[4]); ++rep)
+            for (int i = 0; i < glint_bench::light_pixels::pixels; ++i) sum += static_cast<double>(glint_bench::shade_light_pixel(lp, i, k, shading).x);
     } else {
-        std::fprintf(stderr, "usage: glint_frame_loop point|point-smooth FRAMES | ibl K FRAMES | draw N P\n");
+        std::fprintf(stderr, "usage: glint_frame_loop point|point-smooth FRAMES | ibl K FRAMES | draw N P | lights K MODE REPS\n");
         return 2;
     }
     std::printf("%s: sum %.9g\n", mode, sum);

@@ -15,6 +15,7 @@
 #include "../examples/lights_scene.hpp"
 #include "../tests/support/grid_scene.hpp"
 #include "../tests/support/microfacet_reference.hpp"
+#include "light_pixels.hpp"
 #include "report.hpp"
 
 namespace glint_report {
@@ -83,38 +84,6 @@ void add_estimate_timing(const std::string& name, const glint_test::grid_scene& 
     }, min_time);
 }
 
-// Several point lights on glinty pixels: 1024 pixels of the showcase's flake paint (GGX, alpha
-// 0.25, ln density 5, footprints of 0.4 to 0.8 uv units, N about 20 to 80), 8 point lights each.
-struct light_pixels {
-    static constexpr int pixels = 1024, lights = 8;
-    std::vector<glm::vec2> uv, duvdx, duvdy;
-    std::vector<glm::vec3> wo, wi;  // wi: lights per pixel
-    light_pixels() {
-        for (int i = 0; i < pixels; ++i) {
-            auto r = [&](std::uint32_t salt) { return glint::unit_from_bits<float>(glint::pcg3d(glm::uvec3(static_cast<std::uint32_t>(i), salt, 0x51u)).x); };
-            uv.push_back(glm::vec2(100 * r(1), 100 * r(2)));
-            const float s = 0.4f + 0.4f * r(3);
-            duvdx.push_back(glm::vec2(s, 0.1f * s)), duvdy.push_back(glm::vec2(-0.05f * s, s));
-            const float a = 0.6f * r(4), b = 6.2831853f * r(5);
-            wo.push_back(glm::vec3(std::sin(a) * std::cos(b), std::sin(a) * std::sin(b), std::cos(a)));
-            for (int l = 0; l < lights; ++l) {
-                const float c = 0.9f * r(10 + static_cast<std::uint32_t>(l)), d = 6.2831853f * r(30 + static_cast<std::uint32_t>(l));
-                wi.push_back(glm::vec3(std::sin(c) * std::cos(d), std::sin(c) * std::sin(d), std::cos(c)));
-            }
-        }
-    }
-};
-
-// The smooth specular of one point light (GGX D, Smith G2, silver's conductor Fresnel per channel,
-// unit intensity), as the showcase shades it, and its half vector.
-inline glm::vec3 smooth_point(const glm::vec3& wi, const glm::vec3& wo, glm::vec3& hv) {
-    const glm::vec2 alpha(0.25f);
-    hv = glm::normalize(wi + wo);
-    const float spec = glint::smith_g2(glint::ndf::ggx, wi, wo, hv, alpha) * glint::ndf_value(glint::ndf::ggx, hv, alpha) / (4 * wo.z);
-    const float c = glm::dot(wi, hv);
-    return spec * glm::vec3(glint::fresnel_conductor(0.155f, 4.83f, c), glint::fresnel_conductor(0.117f, 3.12f, c), glint::fresnel_conductor(0.138f, 2.15f, c));
-}
-
 }  // namespace
 
 section grid_section(double min_time) {
@@ -171,29 +140,11 @@ section grid_section(double min_time) {
     // --- several point lights on one footprint -------------------------------------------------
     // Per pixel: k lights shaded smooth, with glints on one shared footprint (grid_pixel), and
     // with glints through a footprint of their own per light (grid_sample for each).
-    static const light_pixels lp;
+    static const glint_bench::light_pixels lp;
     for (int k : {1, 8})
         for (int mode = 0; mode < 3; ++mode)
             add_inline("lights_" + std::to_string(mode) + "_" + std::to_string(k), [k, mode](std::size_t j) {
-                const int i = static_cast<int>(j % light_pixels::pixels);
-                glint::grid_params<float> g;
-                g.log_density = 5, g.seed = static_cast<std::uint32_t>(i);
-                const float dh = glint::total_area(glint::ndf::ggx, glm::vec2(0.25f));
-                auto px = glint::grid_pixel_setup(lp.uv[static_cast<std::size_t>(i)], lp.duvdx[static_cast<std::size_t>(i)], lp.duvdy[static_cast<std::size_t>(i)], g);
-                glm::vec3 sum(0);
-                for (int l = 0; l < k; ++l) {
-                    glm::vec3 hv;
-                    const glm::vec3 c = smooth_point(lp.wi[static_cast<std::size_t>(i * light_pixels::lights + l)], lp.wo[static_cast<std::size_t>(i)], hv);
-                    if (mode == 0) {
-                        sum += c;
-                        continue;
-                    }
-                    const auto light = glint::grid_point_light(glint::ndf::ggx, glm::vec2(0.25f), dh, hv);
-                    const auto e = mode == 1 ? glint::grid_sample(px, g, light)
-                                             : glint::grid_sample(lp.uv[static_cast<std::size_t>(i)], lp.duvdx[static_cast<std::size_t>(i)], lp.duvdy[static_cast<std::size_t>(i)], g, light);
-                    sum += c * glint::modulation(e);
-                }
-                benchmark::DoNotOptimize(sum);
+                benchmark::DoNotOptimize(glint_bench::shade_light_pixel(lp, static_cast<int>(j % glint_bench::light_pixels::pixels), k, mode));
             }, min_time);
     const auto ns = run_all();
 

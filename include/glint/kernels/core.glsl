@@ -26,9 +26,10 @@ GLINT_FN uvec3 glint_pcg3d(uvec3 v) {
 // A 32-bit finaliser: Wellons' "lowbias32" (https://nullprogram.com/blog/2018/07/31/, the
 // constants found by his hash-prospector search; its avalanche bias, his measure, 0.17 against
 // 0.26 for MurmurHash3's finaliser). Two multiplies against PCG3D's twelve, for one word where
-// one uniform decides (grid.glsl's per slope cell draws); on four words at once (vectorised in
-// C++ where the compiler can), and on one through the same code (unused lanes cost nothing once
-// inlined).
+// one uniform decides (grid.glsl's per slope cell draws); on four words at once, and on one.
+// The one-word version is written out, not a lane of the four-word one: GCC keeps the four-word
+// function out of line, so a lane of it cost 31 instructions where the word alone costs 8
+// (callgrind, bench/glint_frame_loop lights 8 1 4).
 GLINT_FN uvec4 glint_hash_u32x4(uvec4 x) {
     x ^= x >> 16u;
     x *= 0x7feb352du;
@@ -39,7 +40,12 @@ GLINT_FN uvec4 glint_hash_u32x4(uvec4 x) {
 }
 
 GLINT_FN uint glint_hash_u32(uint x) {
-    return glint_hash_u32x4(uvec4(x)).x;
+    x ^= x >> 16u;
+    x *= 0x7feb352du;
+    x ^= x >> 15u;
+    x *= 0x846ca68bu;
+    x ^= x >> 16u;
+    return x;
 }
 
 // A uniform variate in [0, 1) from the top 24 bits of a hash: k * 2^-24, exact in float.

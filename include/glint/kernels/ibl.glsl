@@ -129,7 +129,7 @@ GLINT_FN glint_grid_estimate glint_ibl_sample_pixel(GLINT_INOUT(glint_grid_pixel
     real N = px.N;
     // Var(sum_k L_k M_k / N) <= sum_k L_k^2 p_k / N (each multinomial count's variance is at most
     // its mean; the covariances are negative), plus the log-normal density's share.
-    real var_bound = second / max(N, real(1e-30)) + (exp(g.density_sigma * g.density_sigma) - real(1)) * o.expected * o.expected;
+    real var_bound = second / max(N, real(1e-30)) + glint_density_variance_factor(g) * o.expected * o.expected;
     if (var_bound <= g.smooth_tolerance * g.smooth_tolerance * o.expected * o.expected) {
         o.value = o.expected;
         return o;

@@ -332,6 +332,8 @@ struct glint_grid_pixel {
     real N;
     bool ready;  // whether v holds the vertices
     glint_grid_vertices v;
+    real skip_scale[12];  // max(N share, 2) 1.0001 per vertex: the skip test's bound over p, less 1e-5
+    uint word[12];        // the vertices' first hash words, contiguous for glint_skip_test_masks
 };
 
 GLINT_FN glint_grid_pixel glint_grid_pixel_setup(vec2 uv, vec2 duvdx, vec2 duvdy, glint_grid_params g) {
@@ -347,7 +349,43 @@ GLINT_FN glint_grid_pixel glint_grid_pixel_setup(vec2 uv, vec2 duvdx, vec2 duvdy
 GLINT_FN void glint_grid_pixel_vertices(GLINT_INOUT(glint_grid_pixel) px, glint_grid_params g) {
     if (px.ready) return;
     px.v = glint_footprint_vertices(px.uv, px.f, g);
+    for (int i = 0; i < 12; ++i) {
+        px.skip_scale[i] = max(px.N * px.v.share[i], real(2)) * real(1.0001);
+        px.word[i] = px.v.hash[i].x;
+    }
     px.ready = true;
+}
+
+// The skip test (glint_surely_no_success_at: a draw happens where u1 < bound = max(n, 2) p 1.0001
+// + 1e-5) for every vertex and slope corner of one light, before any draw: bit j of bits[i] is set
+// where vertex i draws at corner j. It reads the hash word h whose top 23 bits make u1
+// (glint_open_unit_from_bits): (h >> 8) 2^-24 <= u1, so every h with u1 < bound passes
+// (h >> 8) < bound 2^24, which is exact to float's rounding of bound (far inside its margins of
+// 1.0001 and 1e-5). It may draw where the test on u1 would not, never the other way, and a skipped
+// draw is surely 0, so the estimate is the same (tests/unit/test_grid.cpp checks it against R's
+// definition). The loops have no branches and read contiguous arrays, so that the C++ compiler
+// vectorises them; out of line, because GCC does not once it is inlined. Vertices past px.v.count
+// get bits too (from zero hashes and shares), which nothing reads.
+struct glint_draw_masks {
+    int bits[12];
+};
+
+GLINT_FN_OUT_OF_LINE glint_draw_masks glint_skip_test_masks(GLINT_INOUT(glint_grid_pixel) px, uint corner_key[4], real corner_p[4], int corners,
+                                                             bool skip_test) {
+    glint_draw_masks masks;
+    for (int i = 0; i < 12; ++i) masks.bits[i] = 0;
+    for (int j = 0; j < 4; ++j) {
+        real p24 = corner_p[j] * real(16777216.0);  // 2^24
+        uint key = corner_key[j];
+        for (int i = 0; i < 12; ++i) {
+            uint word = glint_hash_u32(px.word[i] ^ key);
+            masks.bits[i] |= ((real(int(word >> 8u)) < px.skip_scale[i] * p24 + real(167.77216)) ? 1 : 0) << j;  // 1e-5 2^24
+        }
+    }
+    int corner_bits = (1 << corners) - 1;
+    int always = skip_test ? 0 : corner_bits;
+    for (int i = 0; i < 12; ++i) masks.bits[i] = (masks.bits[i] | always) & corner_bits;
+    return masks;
 }
 
 // R for one light on a pixel's footprint (the vertices computed on first need).
@@ -399,58 +437,21 @@ GLINT_FN glint_grid_estimate glint_grid_sample_pixel(GLINT_INOUT(glint_grid_pixe
         corner_key[corners] = glint_slope_cell_key(sbase + ivec2(j & 1, j >> 1));
         ++corners;
     }
-    uvec4 keys = uvec4(corner_key[0], corner_key[1], corner_key[2], corner_key[3]);
-    // The skip test (glint_surely_no_success_at: a corner draws where u1 < bound = max(n, 2) p 1.0001
-    // + 1e-5) on the hash word itself: u1 = (2 (h >> 9) + 1) 2^-24 <= h 2^-32 + 2^-24, so every word
-    // with u1 < bound has h < bound 2^32 + 256 <= uint(bound 2^32) + 257 (bound 2^32 is exact in
-    // float: a power-of-two scaling), and a corner draws where h < T = uint(bound 2^32) + 512. The
-    // test may draw where the float one would not; it never skips a draw the float one makes, and a
-    // skipped draw is surely 0, so the estimate is the same. Where bound >= 1/2 (T would not fit) or
-    // the test does not apply, the corner always draws. T depends on the vertex only through
-    // n = N w_L, which the three triangle vertices of a lattice point share (unless the log-normal
-    // factor is on): it is recomputed only where the share changes. Against the float test per
-    // vertex: 11% fewer instructions per extra light on the CPU, 2693 to 2387 (callgrind on
-    // bench/glint_frame_loop, lights 8 1 4 against lights 1 1 4).
-    bool skip_test = glint_skip_test_applies(g);
-    uint threshold[4];
-    for (int j = 0; j < 4; ++j) threshold[j] = 0u;
-    uvec4 thresholds = uvec4(0u);
-    int always_mask = 0;
-    real last_share = real(-1);
+    // Which vertices draw at which corners. Against the four-wide test on the float u1 per vertex
+    // that this replaced: 1720 instead of 2693 instructions per extra point light on the CPU
+    // (callgrind, bench/glint_frame_loop lights 8 1 4 against lights 1 1 4).
+    glint_draw_masks masks = glint_skip_test_masks(px, corner_key, corner_p, corners, glint_skip_test_applies(g));
     // The three triangle vertices of a lattice point draw with the same N w_L (unless the
     // log-normal factor is on) and p_j: the mean-preserving sampler sets up once per corner for them.
     glint_binomial_cache cache[4];
     for (int j = 0; j < 4; ++j) cache[j] = glint_binomial_empty_cache();
     for (int i = 0; i < px.v.count; ++i) {
-        if (px.v.share[i] != last_share) {
-            last_share = px.v.share[i];
-            real scaled_n = max(N * last_share, real(2)) * real(1.0001);
-            always_mask = 0;
-            for (int j = 0; j < 4; ++j) {
-                real bound = scaled_n * corner_p[j] + real(1e-5);
-                bool draws_always = !skip_test || !(bound < real(0.5));
-                threshold[j] = (j < corners && !draws_always) ? uint(bound * real(4294967296.0)) + 512u : 0u;
-                if (j < corners && draws_always) always_mask |= 1 << j;
-            }
-            thresholds = uvec4(threshold[0], threshold[1], threshold[2], threshold[3]);
-        }
-        uint hx = px.v.hash[i].x;
-        // The four corners' tests at once, as a bit mask of the corners that draw; most vertices
-        // of sparse glints have none, and skip the inner loop whole. Against a test per corner
-        // inside that loop: 9% fewer instructions per point-light frame on the CPU, and on
-        // llvmpipe, which runs 8 pixels in lockstep, 2.4x faster glint frames (examples/gl/glint_gl,
-        // point light, 192x120: 700 against 290 ms).
-        uvec4 words = glint_hash_u32x4(uvec4(hx) ^ keys);
-        int draw_mask = always_mask;
-        if (words.x < thresholds.x) draw_mask |= 1;
-        if (words.y < thresholds.y) draw_mask |= 2;
-        if (words.z < thresholds.z) draw_mask |= 4;
-        if (words.w < thresholds.w) draw_mask |= 8;
-        if (draw_mask == 0) continue;
+        if (masks.bits[i] == 0) continue;
         real n = N * px.v.share[i];
+        uint hx = px.v.hash[i].x;
         uint hy = px.v.hash[i].y;
         for (int j = 0; j < 4; ++j) {
-            if (((draw_mask >> j) & 1) == 0) continue;
+            if (((masks.bits[i] >> j) & 1) == 0) continue;
             uint h1 = glint_cell_draw_word(hx, corner_key[j]);
             real u1 = glint_open_unit_from_bits(h1);
             real u2 = glint_open_unit_from_bits(glint_cell_draw_second_word(h1, hy));

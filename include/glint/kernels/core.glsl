@@ -26,19 +26,9 @@ GLINT_FN uvec3 glint_pcg3d(uvec3 v) {
 // A 32-bit finaliser: Wellons' "lowbias32" (https://nullprogram.com/blog/2018/07/31/, the
 // constants found by his hash-prospector search; its avalanche bias, his measure, 0.17 against
 // 0.26 for MurmurHash3's finaliser). Two multiplies against PCG3D's twelve, for one word where
-// one uniform decides (grid.glsl's per slope cell draws); on four words at once, and on one.
-// The one-word version is written out, not a lane of the four-word one: GCC keeps the four-word
-// function out of line, so a lane of it cost 31 instructions where the word alone costs 8
-// (callgrind, bench/glint_frame_loop lights 8 1 4).
-GLINT_FN uvec4 glint_hash_u32x4(uvec4 x) {
-    x ^= x >> 16u;
-    x *= 0x7feb352du;
-    x ^= x >> 15u;
-    x *= 0x846ca68bu;
-    x ^= x >> 16u;
-    return x;
-}
-
+// one uniform decides (grid.glsl's per slope cell draws). In C++ a loop of them over an array
+// vectorises (grid.glsl's glint_skip_test_masks); the four-wide version it replaced, kept out of
+// line by GCC, cost 31 instructions a call.
 GLINT_FN uint glint_hash_u32(uint x) {
     x ^= x >> 16u;
     x *= 0x7feb352du;
@@ -58,10 +48,6 @@ GLINT_FN real glint_unit_from_bits(uint h) {
 // Use it where 0 or 1 would be a singular input (quantiles, logarithms).
 GLINT_FN real glint_open_unit_from_bits(uint h) {
     return real(((h >> 9u) << 1u) | 1u) * real(5.9604644775390625e-8);  // 2^-24
-}
-
-GLINT_FN vec4 glint_open_unit_from_bits4(uvec4 h) {
-    return vec4(((h >> 9u) << 1u) | uvec4(1u)) * real(5.9604644775390625e-8);  // 2^-24
 }
 
 // ---------------------------------------------------------------------------------------------

@@ -333,7 +333,8 @@ struct glint_grid_pixel {
     bool ready;  // whether v holds the vertices
     glint_grid_vertices v;
     real skip_scale[12];  // max(N share, 2) 1.0001 per vertex: the skip test's bound over p, less 1e-5
-    uint word[12];        // the vertices' first hash words, contiguous for glint_skip_test_masks
+    uint word[12];        // v.hash[i].x, contiguous for glint_skip_test_masks (read in place: 1743
+                          // instead of 1720 instructions per extra light, glint_frame_loop lights)
 };
 
 GLINT_FN glint_grid_pixel glint_grid_pixel_setup(vec2 uv, vec2 duvdx, vec2 duvdy, glint_grid_params g) {

@@ -2,8 +2,9 @@
 // underflowed ends) skip transcendentals where the result is already decided. They must give
 // bit for bit what the straight-line evaluation gives. The references below are that evaluation,
 // written out from the kernels' pieces: KK25 Alg. 1 as published (every gate and the quantile
-// always evaluated), and the mean-preserving sampler with its ends always computed. Inputs: the
-// grid, more N and p, and u1 at 2 ulps either side of every gate threshold and every bound.
+// always evaluated), and the mean-preserving sampler with its ends always computed and its middle
+// always set up (no busy-middle shortcut). Inputs: the grid, more N and p, and u1 at 2 ulps
+// either side of every gate threshold and every bound.
 // For u1 a normal number: the one difference, gate probabilities below the normal range taken
 // as 0, decides the same for every normal u1.
 #include <doctest/doctest.h>
@@ -70,6 +71,8 @@ std::vector<real> u1_values(real N, real p, int method) {
                                          real(1) - real(1e-6) - real(1.001) / cubic(x_neg)});
     const auto e = K<real>::glint_binomial_unbiased_ends_evaluated(N2, p, method);
     thresholds.insert(thresholds.end(), {e.all_positive, real(1) - e.all_negative});
+    // The busy middle's bounds on u1 (glint_binomial_unbiased_busy).
+    thresholds.insert(thresholds.end(), {real(1.03e-3), real(1) - real(1.03e-3)});
     std::vector<real> us = {real(1), real(0x1p-24), real(1) - real(0x1p-24), real(0.5)};
     for (real t : thresholds) {
         // u1 is a normal number: the shortcuts take subnormal gate probabilities as 0, which
@@ -87,7 +90,9 @@ std::vector<real> u1_values(real N, real p, int method) {
 template <class real>
 void check_identical(const char* precision) {
     std::vector<double> ns = gt::binomial_grid_n(), ps = gt::binomial_grid_p();
-    for (double extra : {2.5, 4.0, 50.0, 176.0, 180.0, 220.0, 300.0, 1418.0, 1600.0, 1e5, 1e18}) ns.push_back(extra);
+    // Also where the busy middle begins: N p_near = 17 (N = 34 at p = 1/2, 1700 at p = 0.01) and
+    // 6 sd = N p_near - 1 (N p_near = 38.4 at p_near = 0.01: N = 3840).
+    for (double extra : {2.5, 4.0, 34.0, 50.0, 176.0, 180.0, 220.0, 300.0, 1418.0, 1600.0, 1700.0, 3840.0, 1e5, 1e18}) ns.push_back(extra);
     for (double extra : {0.25, 0.4999, 0.5001, 1e-7, 3e-8, 2.8e-4, 0.75, 1 - 1e-4, 88.0 / 180, 709.0 / 1418, 88.0 / 1e5, 709.0 / 1e5, 90.0 / 1e18}) ps.push_back(extra);
     const real u2s[] = {real(0x1p-24), real(0.0137), real(0.5), real(0.77), real(1) - real(0x1p-24)};
     long checked = 0, differ = 0;

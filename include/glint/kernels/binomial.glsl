@@ -1186,6 +1186,28 @@ GLINT_FN glint_binomial glint_binomial_unbiased_small(real N, real p, real u1) {
     return glint_binomial_pair(g.positive_fixed + g.gaussian, g.negative_fixed + g.gaussian);
 }
 
+// The busy middle, where most draws of large footprints fall: lambda = N p_near >= 17 (so
+// N >= 34), the clamp 6 sd or more below the mean (glint_binomial_busy_fit's first case) and u1 in
+// [1.03e-3, 1 - 1.03e-3]. There glint_binomial_unbiased's test finds the middle sure (both of its
+// glint_binomial_exp_taylor3 factors are at least exp_taylor3(0.999 x 17) = 978.6, and
+// 1.001 / 978.6 = 1.0229e-3, plus 1e-6 at the top), so this is its arithmetic without the setup:
+// the same result (tests/unit/test_binomial_shortcuts.cpp), in about 175 instructions against
+// about 250 (Alg. 1's middle: 170). For N > 2 and N, p clamped; false where it does not apply.
+GLINT_FN bool glint_binomial_unbiased_busy(real N, real p, real u1, real u2, int method, GLINT_OUT(glint_binomial) r) {
+    real p_near = min(p, real(1) - p);
+    real lambda = N * p_near;
+    if (!(method != GLINT_POW_NAIVE && lambda >= GLINT_BINOMIAL_BUSY_LAMBDA && u1 >= real(1.03e-3) && u1 <= real(1) - real(1.03e-3)))
+        return false;
+    real m = lambda - real(1);
+    real sd = sqrt(lambda * (real(1) - p_near));
+    if (!(real(6) * sd <= m)) return false;
+    bool lower = p <= real(0.5);
+    real z = glint_normal_quantile(lower ? u2 : real(1) - u2);
+    real G = clamp((lower ? real(1) + m : (N - real(1)) - m) + sd * (lower ? z : -z), real(1), N - real(1));
+    r = glint_binomial_pair(G, N - G);
+    return true;
+}
+
 // The mean-preserving dual-gated sampler: KK25 Alg. 1's gates (exact for N <= 2), and for N > 2
 // a middle part whose mean is E[n | 1 <= n <= N - 1] exactly and whose variance matches the
 // binomial's on that event (glint/binomial.hpp derives it). With the same result as the
@@ -1196,6 +1218,8 @@ GLINT_FN glint_binomial glint_binomial_unbiased(real N, real p, real u1, real u2
     p = clamp(p, real(0), real(1));
     if (glint_binomial_surely_near_end(N, p, u1, method)) return glint_binomial_near_end(N, p);
     if (N <= real(2)) return glint_binomial_unbiased_small(N, p, u1);
+    glint_binomial busy;
+    if (glint_binomial_unbiased_busy(N, p, u1, u2, method, busy)) return busy;
     // Where u1 is surely above p^N and below 1 - (1 - p)^N, no gate fires, and where the middle's
     // parameters come from a table or the closed form, the ends are not needed at all: they are
     // taken as 0, which decides the gates alike. The bounds are glint_binomial_dual_gated's with
@@ -1267,6 +1291,8 @@ GLINT_FN glint_binomial glint_binomial_unbiased_cached(real N, real p, real u1, 
     p = clamp(p, real(0), real(1));
     if (glint_binomial_surely_near_end(N, p, u1, method)) return glint_binomial_near_end(N, p);
     if (N <= real(2)) return glint_binomial_unbiased_small(N, p, u1);
+    glint_binomial busy;
+    if (glint_binomial_unbiased_busy(N, p, u1, u2, method, busy)) return busy;
     if (!(cache.state > 0 && cache.N == N && cache.p == p)) {
         cache.N = N;
         cache.p = p;

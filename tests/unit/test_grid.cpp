@@ -121,6 +121,14 @@ TEST_CASE("lattice rotations: cos and sin of bin pi / 2^(level + 1) from the tab
     CHECK(double_far == 0);
 }
 
+TEST_CASE("lattice scalings: glint_exp2_int(n) is exactly 2^n for |n| <= 30, in float and double") {
+    // The lattice's cell scalings 2^-(lod + level) reach n from -29 to 24; the reference is ldexp.
+    using KD = glint::detail::glsl::kernels<double>;
+    int differ = 0;
+    for (int n = -30; n <= 30; ++n) differ += (K::glint_exp2_int(n) != std::ldexp(1.0f, n)) + (KD::glint_exp2_int(n) != std::ldexp(1.0, n));
+    CHECK(differ == 0);
+}
+
 TEST_CASE("triangle grid: barycentrics reproduce the point (so interpolation is continuous across edges)") {
     double worst = 0;
     for (std::uint32_t i = 0; i < 100000; ++i) {

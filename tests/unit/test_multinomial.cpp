@@ -97,3 +97,36 @@ TEST_CASE("a root cache gives exactly the uncached counts (runs of three draws a
     CHECK(checked == 84);
     CHECK(differ == 0);
 }
+
+TEST_CASE("the split tree: node q in the order the draw visits the nodes, the probabilities clamped and scaled as the draw needs") {
+    using MK = glint::detail::glsl::kernels<double>;
+    MK::glint_multinomial_probabilities pr;
+    const double p[8] = {0.05, 0.1, -0.2, 0.15, 0.02, 0.08, 0.3, 0.9};  // a negative one, and the 8th beyond K = 7
+    for (int k = 0; k < 8; ++k) pr.p[k] = p[k];
+    // K = 7: bins 0..6 (the negative one as 0) sum to 0.7. Nodes breadth-first: [0,7) -> [0,3)
+    // and [3,7); [0,3) -> {0} and [1,3); [3,7) -> [3,5) and [5,7); then [1,3), [3,5), [5,7).
+    const auto t = MK::glint_multinomial_make_tree(pr, 7);
+    CHECK(t.K == 7);
+    CHECK(t.total == doctest::Approx(0.7).epsilon(1e-15));
+    const double want[6] = {0.15 / 0.7, 0.05 / 0.15, 0.17 / 0.55, 0.1 / 0.1, 0.15 / 0.17, 0.08 / 0.38};
+    for (int h = 0; h < 6; ++h) {
+        CAPTURE(h);
+        CHECK(t.q[h] == doctest::Approx(want[h]).epsilon(1e-14));
+    }
+    // K = 4 with probabilities summing to 2: scaled to 1, so the root keeps every trial.
+    MK::glint_multinomial_probabilities big;
+    for (int k = 0; k < 8; ++k) big.p[k] = 0.5;
+    const auto t4 = MK::glint_multinomial_make_tree(big, 4);
+    CHECK(t4.total == 1.0);
+    CHECK(t4.q[0] == 0.5);
+    // The draw through the tree is the draw from the probabilities, count for count.
+    for (std::uint32_t i = 0; i < 200; ++i) {
+        auto c1 = MK::glint_binomial_empty_cache(), c2 = MK::glint_binomial_empty_cache();
+        const glm::uvec3 seed(i, 3u, 4u);
+        const auto u = MK::glint_multinomial_uniforms(seed, 0);
+        const auto a = MK::glint_multinomial_draw(37.5, t, seed, u, MK::GLINT_BINOMIAL_UNBIASED, MK::GLINT_POW_LOG1P, c1);
+        const auto b = MK::glint_multinomial_from_root(37.5, pr, 7, seed, u, MK::GLINT_BINOMIAL_UNBIASED, MK::GLINT_POW_LOG1P, c2);
+        for (int k = 0; k < 8; ++k) REQUIRE(a.count[k] == b.count[k]);
+        REQUIRE(a.rest == b.rest);
+    }
+}

@@ -84,14 +84,16 @@ GLINT_FN glint_ibl_shares glint_ibl_level_shares(GLINT_INOUT(glint_grid_pixel) p
     glint_grid_pixel_vertices(px, g);
     real lit_total = real(0);
     for (int k = 0; k < 8; ++k) lit_total += lit.p[k];
-    // The triangle vertices of a lattice point share the root's N and p (glint_grid_sample).
+    // Every vertex splits with the same probabilities: the tree once per pixel. The triangle
+    // vertices of a lattice point share the root's N and p (glint_grid_sample).
+    glint_multinomial_tree tree = glint_multinomial_make_tree(lit, K - 1);
     glint_binomial_cache root_cache = glint_binomial_empty_cache();
     for (int i = 0; i < px.v.count; ++i) {
         // The multinomial's root draws the lit levels against the rest with these uniforms: if it
         // surely draws none, every count is 0 (glint_surely_no_success).
         vec2 root_u = glint_multinomial_uniforms(px.v.hash[i], 0);
         if (glint_surely_no_success(g, N * px.v.share[i], min(lit_total, real(1)), root_u.x)) continue;
-        glint_multinomial_counts c = glint_multinomial_from_root(N * px.v.share[i], lit, K - 1, px.v.hash[i], root_u, g.variant, g.pow_method, root_cache);
+        glint_multinomial_counts c = glint_multinomial_draw(N * px.v.share[i], tree, px.v.hash[i], root_u, g.variant, g.pow_method, root_cache);
         for (int k = 0; k < 7; ++k) o.share[k + 1] += px.v.weight[i] * c.count[k] / N;
         o.draws += K - 1;
     }

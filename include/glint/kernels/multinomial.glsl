@@ -28,31 +28,72 @@ GLINT_FN vec2 glint_multinomial_uniforms(uvec3 seed, int node) {
     return vec2(glint_open_unit_from_bits(h.x), glint_open_unit_from_bits(h.y));
 }
 
-// N trials over K bins (K clamped to 2..8; probabilities clamped to >= 0 and scaled down if
-// they sum to more than 1). `variant` is a GLINT_BINOMIAL_* code, `method` a GLINT_POW_* code,
-// `seed` any three words (a hash of the pixel, the grid vertex and the frame). With the
-// mean-preserving variant the root draw keeps its parameters in `root_cache`, for the next call
-// with the same N and probabilities (the same counts as without). `root_u` is
-// glint_multinomial_uniforms(seed, 0), for callers that have it already (glint_multinomial_cached
-// below computes it).
-GLINT_FN glint_multinomial_counts glint_multinomial_from_root(real N, glint_multinomial_probabilities probs, int K, uvec3 seed,
-                                                             vec2 root_u, int variant, int method,
-                                                             GLINT_INOUT(glint_binomial_cache) root_cache) {
-    K = clamp(K, 2, 8);
-    N = max(N, real(0));
+// The hierarchy's split probabilities for K bins (K clamped to 2..8; probabilities clamped to
+// >= 0 and scaled down if they sum to more than 1): the root's total, and per inner node, in the
+// breadth-first order the draw visits them, the probability q that a trial of the node goes to its
+// left half. They depend on the probabilities only: a caller that draws many multinomials with one
+// set (the IBL's grid vertices of a pixel) makes them once.
+struct glint_multinomial_tree {
+    int K;
+    real total;  // the K bins' probability, at most 1
+    real q[7];   // per inner node; node 0 holds all K bins
+};
+
+GLINT_FN glint_multinomial_tree glint_multinomial_make_tree(glint_multinomial_probabilities probs, int K) {
+    glint_multinomial_tree t;
+    t.K = clamp(K, 2, 8);
     real total = real(0);
     for (int k = 0; k < 8; ++k) {
-        probs.p[k] = (k < K) ? max(probs.p[k], real(0)) : real(0);
+        probs.p[k] = (k < t.K) ? max(probs.p[k], real(0)) : real(0);
         total += probs.p[k];
     }
     real scale = (total > real(1)) ? real(1) / total : real(1);
     for (int k = 0; k < 8; ++k) probs.p[k] *= scale;
-    total = min(total * scale, real(1));
+    t.total = min(total * scale, real(1));
+    // The nodes [lo, hi) in the order glint_multinomial_draw visits them: node 0 is [0, K), and a
+    // node's inner children are appended to the queue, left before right.
+    int queue_lo[8];
+    int queue_hi[8];
+    queue_lo[0] = 0;
+    queue_hi[0] = t.K;
+    int tail = 1;
+    for (int head = 0; head < 7; ++head) {
+        t.q[head] = real(0.5);
+        if (head >= tail) continue;
+        int lo = queue_lo[head];
+        int hi = queue_hi[head];
+        int mid = lo + (hi - lo) / 2;
+        real left = real(0);
+        real right = real(0);
+        for (int k = lo; k < mid; ++k) left += probs.p[k];  // the same sums as over all 8 bins with zeros
+        for (int k = mid; k < hi; ++k) right += probs.p[k];
+        t.q[head] = (left + right > real(0)) ? clamp(left / (left + right), real(0), real(1)) : real(0.5);
+        if (mid - lo > 1) {
+            queue_lo[tail] = lo;
+            queue_hi[tail] = mid;
+            ++tail;
+        }
+        if (hi - mid > 1) {
+            queue_lo[tail] = mid;
+            queue_hi[tail] = hi;
+            ++tail;
+        }
+    }
+    return t;
+}
 
+// N trials over the tree's K bins. `variant` is a GLINT_BINOMIAL_* code, `method` a GLINT_POW_*
+// code, `seed` any three words (a hash of the pixel, the grid vertex and the frame). With the
+// mean-preserving variant the root draw keeps its parameters in `root_cache`, for the next call
+// with the same N and tree (the same counts as without). `root_u` is
+// glint_multinomial_uniforms(seed, 0), for callers that have it already.
+GLINT_FN glint_multinomial_counts glint_multinomial_draw(real N, glint_multinomial_tree t, uvec3 seed, vec2 root_u, int variant, int method,
+                                                        GLINT_INOUT(glint_binomial_cache) root_cache) {
+    N = max(N, real(0));
     glint_multinomial_counts result;
     for (int k = 0; k < 8; ++k) result.count[k] = real(0);
     // Root: the K bins against the rest.
-    glint_binomial root = glint_binomial_variant_cached(variant, N, total, root_u.x, root_u.y, method, root_cache);
+    glint_binomial root = glint_binomial_variant_cached(variant, N, t.total, root_u.x, root_u.y, method, root_cache);
     result.rest = root.negative;
 
     // Breadth-first over the inner nodes [lo, hi) of the bins, at most K - 1 = 7 of them; a node's
@@ -61,7 +102,7 @@ GLINT_FN glint_multinomial_counts glint_multinomial_from_root(real N, glint_mult
     int queue_hi[8];
     real queue_n[8];
     queue_lo[0] = 0;
-    queue_hi[0] = K;
+    queue_hi[0] = t.K;
     queue_n[0] = root.positive;
     int tail = 1;
     for (int head = 0; head < 7; ++head) {
@@ -70,11 +111,7 @@ GLINT_FN glint_multinomial_counts glint_multinomial_from_root(real N, glint_mult
         int hi = queue_hi[head];
         real n = queue_n[head];
         int mid = lo + (hi - lo) / 2;
-        real left = real(0);
-        real right = real(0);
-        for (int k = lo; k < mid; ++k) left += probs.p[k];  // the same sums as over all 8 bins with zeros
-        for (int k = mid; k < hi; ++k) right += probs.p[k];
-        real q = (left + right > real(0)) ? clamp(left / (left + right), real(0), real(1)) : real(0.5);
+        real q = t.q[head];
         real n_left = real(0);
         if (n > real(0)) {  // an empty node splits into empty halves: no hash, no draw
             vec2 v = glint_multinomial_uniforms(seed, head + 1);
@@ -103,6 +140,13 @@ GLINT_FN glint_multinomial_counts glint_multinomial_from_root(real N, glint_mult
         }
     }
     return result;
+}
+
+// N trials over K bins: glint_multinomial_draw on the tree of `probs`.
+GLINT_FN glint_multinomial_counts glint_multinomial_from_root(real N, glint_multinomial_probabilities probs, int K, uvec3 seed,
+                                                             vec2 root_u, int variant, int method,
+                                                             GLINT_INOUT(glint_binomial_cache) root_cache) {
+    return glint_multinomial_draw(N, glint_multinomial_make_tree(probs, K), seed, root_u, variant, method, root_cache);
 }
 
 GLINT_FN glint_multinomial_counts glint_multinomial_cached(real N, glint_multinomial_probabilities probs, int K, uvec3 seed,

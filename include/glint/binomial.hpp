@@ -83,7 +83,11 @@
 // exponent of p_near already shows it (p_near^N < 2^(floor(N) e) <= 2^-128); N <= 2 needs no
 // transcendental at all.
 // Where the mean-preserving sampler surely draws the middle and its parameters need no ends, it
-// skips the gates as well (they would give the middle).
+// skips the gates as well (they would give the middle). From N p_near = 17 on, where the clamp is
+// 6 sd or more below the mean and u1 is in [1.03e-3, 1 - 1.03e-3], a bound that implies the sure
+// middle there, it draws the Gaussian at once (glint_binomial_unbiased_busy): Alg. 1's cost for
+// most draws of large footprints. The cached kernel (glint_binomial_unbiased_cached, the grid's)
+// keeps its cache instead.
 // Sparse glints (N p << 1), the common case, then cost two comparisons. Where the middle is
 // drawn, its setup (step 4) costs a table read (N < 32: a log2, two sqrt and 16 node pairs, and
 // an exp), a log2, two sqrt and 21 to 24 polynomial terms per output in the band, or a sqrt and

@@ -28,45 +28,52 @@ GLINT_FN vec2 glint_multinomial_uniforms(uvec3 seed, int node) {
     return vec2(glint_open_unit_from_bits(h.x), glint_open_unit_from_bits(h.y));
 }
 
-// The hierarchy's split probabilities for K bins (K clamped to 2..8; probabilities clamped to
-// >= 0 and scaled down if they sum to more than 1): the root's total, and per inner node, in the
-// breadth-first order the draw visits them, the probability q that a trial of the node goes to its
-// left half. They depend on the probabilities only: a caller that draws many multinomials with one
-// set (the IBL's grid vertices of a pixel) makes them once.
+// The hierarchy for K bins (K clamped to 2..8; probabilities clamped to >= 0 and scaled down if
+// they sum to more than 1): the root's total and, per inner node in the breadth-first order the
+// draw visits them, the probability q that a trial of the node goes to its left half. They depend
+// on the probabilities only: a caller that draws many multinomials with one set (the IBL's grid
+// vertices of a pixel) makes them once (glint_multinomial_make_tree); a single draw makes the q
+// only where the root keeps a trial (sparse glints: most draws keep none).
 struct glint_multinomial_tree {
     int K;
     real total;  // the K bins' probability, at most 1
+    real p[8];   // the bins' probabilities as clamped and scaled
     real q[7];   // per inner node; node 0 holds all K bins
 };
 
-GLINT_FN glint_multinomial_tree glint_multinomial_make_tree(glint_multinomial_probabilities probs, int K) {
+// K, the probabilities and their total; the q are left to glint_multinomial_tree_splits.
+GLINT_FN glint_multinomial_tree glint_multinomial_tree_root(glint_multinomial_probabilities probs, int K) {
     glint_multinomial_tree t;
     t.K = clamp(K, 2, 8);
     real total = real(0);
     for (int k = 0; k < 8; ++k) {
-        probs.p[k] = (k < t.K) ? max(probs.p[k], real(0)) : real(0);
-        total += probs.p[k];
+        t.p[k] = (k < t.K) ? max(probs.p[k], real(0)) : real(0);
+        total += t.p[k];
     }
     real scale = (total > real(1)) ? real(1) / total : real(1);
-    for (int k = 0; k < 8; ++k) probs.p[k] *= scale;
+    for (int k = 0; k < 8; ++k) t.p[k] *= scale;
     t.total = min(total * scale, real(1));
-    // The nodes [lo, hi) in the order glint_multinomial_draw visits them: node 0 is [0, K), and a
-    // node's inner children are appended to the queue, left before right.
+    for (int h = 0; h < 7; ++h) t.q[h] = real(0.5);
+    return t;
+}
+
+// The nodes [lo, hi) in the order glint_multinomial_split_nodes visits them: node 0 is [0, K), and
+// a node's inner children are appended to the queue, left before right.
+GLINT_FN void glint_multinomial_tree_splits(GLINT_INOUT(glint_multinomial_tree) t) {
     int queue_lo[8];
     int queue_hi[8];
     queue_lo[0] = 0;
     queue_hi[0] = t.K;
     int tail = 1;
     for (int head = 0; head < 7; ++head) {
-        t.q[head] = real(0.5);
-        if (head >= tail) continue;
+        if (head >= tail) break;
         int lo = queue_lo[head];
         int hi = queue_hi[head];
         int mid = lo + (hi - lo) / 2;
         real left = real(0);
         real right = real(0);
-        for (int k = lo; k < mid; ++k) left += probs.p[k];  // the same sums as over all 8 bins with zeros
-        for (int k = mid; k < hi; ++k) right += probs.p[k];
+        for (int k = lo; k < mid; ++k) left += t.p[k];  // the same sums as over all 8 bins with zeros
+        for (int k = mid; k < hi; ++k) right += t.p[k];
         t.q[head] = (left + right > real(0)) ? clamp(left / (left + right), real(0), real(1)) : real(0.5);
         if (mid - lo > 1) {
             queue_lo[tail] = lo;
@@ -79,31 +86,25 @@ GLINT_FN glint_multinomial_tree glint_multinomial_make_tree(glint_multinomial_pr
             ++tail;
         }
     }
+}
+
+GLINT_FN glint_multinomial_tree glint_multinomial_make_tree(glint_multinomial_probabilities probs, int K) {
+    glint_multinomial_tree t = glint_multinomial_tree_root(probs, K);
+    glint_multinomial_tree_splits(t);
     return t;
 }
 
-// N trials over the tree's K bins. `variant` is a GLINT_BINOMIAL_* code, `method` a GLINT_POW_*
-// code, `seed` any three words (a hash of the pixel, the grid vertex and the frame). With the
-// mean-preserving variant the root draw keeps its parameters in `root_cache`, for the next call
-// with the same N and tree (the same counts as without). `root_u` is
-// glint_multinomial_uniforms(seed, 0), for callers that have it already.
-GLINT_FN glint_multinomial_counts glint_multinomial_draw(real N, glint_multinomial_tree t, uvec3 seed, vec2 root_u, int variant, int method,
-                                                        GLINT_INOUT(glint_binomial_cache) root_cache) {
-    N = max(N, real(0));
-    glint_multinomial_counts result;
-    for (int k = 0; k < 8; ++k) result.count[k] = real(0);
-    // Root: the K bins against the rest.
-    glint_binomial root = glint_binomial_variant_cached(variant, N, t.total, root_u.x, root_u.y, method, root_cache);
-    result.rest = root.negative;
-
-    // Breadth-first over the inner nodes [lo, hi) of the bins, at most K - 1 = 7 of them; a node's
-    // inner children are appended to the queue, its leaves written out. (GLSL has no recursion.)
+// The root's `positive` trials split down the tree into result.count (breadth-first over the inner
+// nodes [lo, hi), at most K - 1 = 7 of them: a node's inner children are appended to the queue, its
+// leaves written out; GLSL has no recursion).
+GLINT_FN void glint_multinomial_split_nodes(real positive, glint_multinomial_tree t, uvec3 seed, int variant, int method,
+                                            GLINT_INOUT(glint_multinomial_counts) result) {
     int queue_lo[8];
     int queue_hi[8];
     real queue_n[8];
     queue_lo[0] = 0;
     queue_hi[0] = t.K;
-    queue_n[0] = root.positive;
+    queue_n[0] = positive;
     int tail = 1;
     for (int head = 0; head < 7; ++head) {
         if (head >= tail) break;
@@ -139,14 +140,38 @@ GLINT_FN glint_multinomial_counts glint_multinomial_draw(real N, glint_multinomi
             ++tail;
         }
     }
+}
+
+// N trials over the tree's K bins (its q made). `variant` is a GLINT_BINOMIAL_* code, `method` a
+// GLINT_POW_* code, `seed` any three words (a hash of the pixel, the grid vertex and the frame).
+// With the mean-preserving variant the root draw keeps its parameters in `root_cache`, for the next
+// call with the same N and total (the same counts as without). `root_u` is
+// glint_multinomial_uniforms(seed, 0), for callers that have it already.
+GLINT_FN glint_multinomial_counts glint_multinomial_draw(real N, glint_multinomial_tree t, uvec3 seed, vec2 root_u, int variant, int method,
+                                                        GLINT_INOUT(glint_binomial_cache) root_cache) {
+    glint_multinomial_counts result;
+    for (int k = 0; k < 8; ++k) result.count[k] = real(0);
+    // Root: the K bins against the rest.
+    glint_binomial root = glint_binomial_variant_cached(variant, max(N, real(0)), t.total, root_u.x, root_u.y, method, root_cache);
+    result.rest = root.negative;
+    if (root.positive > real(0)) glint_multinomial_split_nodes(root.positive, t, seed, variant, method, result);
     return result;
 }
 
-// N trials over K bins: glint_multinomial_draw on the tree of `probs`.
+// N trials over K bins, the tree's q made only where the root keeps a trial.
 GLINT_FN glint_multinomial_counts glint_multinomial_from_root(real N, glint_multinomial_probabilities probs, int K, uvec3 seed,
                                                              vec2 root_u, int variant, int method,
                                                              GLINT_INOUT(glint_binomial_cache) root_cache) {
-    return glint_multinomial_draw(N, glint_multinomial_make_tree(probs, K), seed, root_u, variant, method, root_cache);
+    glint_multinomial_tree t = glint_multinomial_tree_root(probs, K);
+    glint_multinomial_counts result;
+    for (int k = 0; k < 8; ++k) result.count[k] = real(0);
+    glint_binomial root = glint_binomial_variant_cached(variant, max(N, real(0)), t.total, root_u.x, root_u.y, method, root_cache);
+    result.rest = root.negative;
+    if (root.positive > real(0)) {
+        glint_multinomial_tree_splits(t);
+        glint_multinomial_split_nodes(root.positive, t, seed, variant, method, result);
+    }
+    return result;
 }
 
 GLINT_FN glint_multinomial_counts glint_multinomial_cached(real N, glint_multinomial_probabilities probs, int K, uvec3 seed,

@@ -106,7 +106,7 @@ section ibl_section(double min_time) {
     md << "## Image-based lighting of glints (glint/ibl.hpp)\n\n";
     std::ostringstream t;
     t << "Environment `sunset.exr` (" << img.width << " x " << img.height << "), 6 roughness levels, 64 GGX samples per texel, "
-      << "one thread. Shading: a sphere in a 160 x 100 view (about 12600 pixels), smooth split-sum IBL against glints (ln density "
+      << "one thread. Shading: a sphere of radius 50 pixels in a 160 x 100 view (7825 pixels), smooth split-sum IBL against glints (ln density "
          "4), one run:\n\n"
       << "| knob | prefilter s | smooth us/frame | glints us/frame | glints / smooth |\n|---|---|---|---|---|\n";
     for (std::size_t e = 0; e < envs.size(); ++e) {

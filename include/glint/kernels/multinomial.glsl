@@ -142,6 +142,16 @@ GLINT_FN void glint_multinomial_split_nodes(real positive, glint_multinomial_tre
     }
 }
 
+// The root of a draw: N trials drawn between the K bins (probability `total`) and the rest.
+// Zeroes the counts, sets result.rest, and returns the bins' trials for glint_multinomial_split_nodes.
+GLINT_FN real glint_multinomial_root(real N, real total, vec2 root_u, int variant, int method, GLINT_INOUT(glint_binomial_cache) root_cache,
+                                     GLINT_OUT(glint_multinomial_counts) result) {
+    for (int k = 0; k < 8; ++k) result.count[k] = real(0);
+    glint_binomial root = glint_binomial_variant_cached(variant, max(N, real(0)), total, root_u.x, root_u.y, method, root_cache);
+    result.rest = root.negative;
+    return root.positive;
+}
+
 // N trials over the tree's K bins (its q made). `variant` is a GLINT_BINOMIAL_* code, `method` a
 // GLINT_POW_* code, `seed` any three words (a hash of the pixel, the grid vertex and the frame).
 // With the mean-preserving variant the root draw keeps its parameters in `root_cache`, for the next
@@ -150,11 +160,8 @@ GLINT_FN void glint_multinomial_split_nodes(real positive, glint_multinomial_tre
 GLINT_FN glint_multinomial_counts glint_multinomial_draw(real N, glint_multinomial_tree t, uvec3 seed, vec2 root_u, int variant, int method,
                                                         GLINT_INOUT(glint_binomial_cache) root_cache) {
     glint_multinomial_counts result;
-    for (int k = 0; k < 8; ++k) result.count[k] = real(0);
-    // Root: the K bins against the rest.
-    glint_binomial root = glint_binomial_variant_cached(variant, max(N, real(0)), t.total, root_u.x, root_u.y, method, root_cache);
-    result.rest = root.negative;
-    if (root.positive > real(0)) glint_multinomial_split_nodes(root.positive, t, seed, variant, method, result);
+    real kept = glint_multinomial_root(N, t.total, root_u, variant, method, root_cache, result);
+    if (kept > real(0)) glint_multinomial_split_nodes(kept, t, seed, variant, method, result);
     return result;
 }
 
@@ -164,12 +171,10 @@ GLINT_FN glint_multinomial_counts glint_multinomial_from_root(real N, glint_mult
                                                              GLINT_INOUT(glint_binomial_cache) root_cache) {
     glint_multinomial_tree t = glint_multinomial_tree_root(probs, K);
     glint_multinomial_counts result;
-    for (int k = 0; k < 8; ++k) result.count[k] = real(0);
-    glint_binomial root = glint_binomial_variant_cached(variant, max(N, real(0)), t.total, root_u.x, root_u.y, method, root_cache);
-    result.rest = root.negative;
-    if (root.positive > real(0)) {
+    real kept = glint_multinomial_root(N, t.total, root_u, variant, method, root_cache, result);
+    if (kept > real(0)) {
         glint_multinomial_tree_splits(t);
-        glint_multinomial_split_nodes(root.positive, t, seed, variant, method, result);
+        glint_multinomial_split_nodes(kept, t, seed, variant, method, result);
     }
     return result;
 }

@@ -1211,6 +1211,22 @@ GLINT_FN bool glint_binomial_unbiased_busy(real N, real p, real u1, real u2, int
     return true;
 }
 
+// The sure middle whose parameters need no ends (glint_binomial_unbiased's surely_middle): the
+// general path's arithmetic without its gates, ends and setup structs, for the same result
+// (tests/unit/test_binomial_shortcuts.cpp). There N >= 4, so the middle is the clamped Gaussian
+// (glint_binomial_unbiased_middle's first case). In C++ it saves about 40 of 570 instructions per
+// draw where the far bound's table gives the parameters (N = 30, p = 1/2) and of 480 in the band
+// (N = 1000, p = 0.01) (callgrind, a loop of draws); GLSL keeps the one path, which inlines the
+// table read and the band's polynomials once (see glint_binomial_unbiased).
+GLINT_FN glint_binomial glint_binomial_unbiased_sure_middle(real N, real p, real u2) {
+    bool lower = p <= real(0.5);
+    vec3 f = glint_binomial_middle_fit(N, lower ? p : real(1) - p);
+    real center = lower ? real(1) + f.z : (N - real(1)) - f.z;
+    real z = glint_normal_quantile(lower ? u2 : real(1) - u2);
+    real G = clamp(center + f.y * (lower ? z : -z), real(1), N - real(1));
+    return glint_binomial_pair(G, N - G);
+}
+
 // The mean-preserving dual-gated sampler: KK25 Alg. 1's gates (exact for N <= 2), and for N > 2
 // a middle part whose mean is E[n | 1 <= n <= N - 1] exactly and whose variance matches the
 // binomial's on that event (glint/binomial.hpp derives it). With the same result as the
@@ -1227,12 +1243,16 @@ GLINT_FN glint_binomial glint_binomial_unbiased(real N, real p, real u1, real u2
     // parameters come from a table or the closed form, the ends are not needed at all: they are
     // taken as 0, which decides the gates alike. The bounds are glint_binomial_dual_gated's with
     // exp(-x) <= 1 / (1 + x + x^2 / 2 + x^3 / 6) for (1 - q)^N <= exp(-N q) in place of
-    // 1 / (1 + x): at N q = 10, 0.4% of the draws left to decide from the ends instead of 9%. One
-    // path for both, so that the middle's setup is inlined once (in GLSL, twice made the frames
-    // of examples/gl/glint_gl slower on llvmpipe).
+    // 1 / (1 + x): at N q = 10, 0.4% of the draws left to decide from the ends instead of 9%. In
+    // C++ the sure middle takes glint_binomial_unbiased_sure_middle; GLSL keeps one path for both,
+    // so that the middle's setup is inlined once (twice made the frames of examples/gl/glint_gl
+    // slower on llvmpipe).
     bool surely_middle = method != GLINT_POW_NAIVE && glint_binomial_middle_needs_no_ends(N, min(p, real(1) - p)) &&
                          u1 * glint_binomial_exp_taylor3(real(0.999) * N * (real(1) - p)) >= real(1.001) &&
                          (real(1) - u1 - real(1e-6)) * glint_binomial_exp_taylor3(real(0.999) * N * p) >= real(1.001);
+#if !defined(GLINT_GLSL)
+    if (surely_middle) return glint_binomial_unbiased_sure_middle(N, p, u2);
+#endif
     glint_binomial_ends e;
     glint_binomial_gates g;
     if (surely_middle) {

@@ -86,8 +86,10 @@
 // skips the gates as well (they would give the middle). From N p_near = 17 on, where the clamp is
 // 6 sd or more below the mean and u1 is in [1.03e-3, 1 - 1.03e-3], a bound that implies the sure
 // middle there, it draws the Gaussian at once (glint_binomial_unbiased_busy): Alg. 1's cost for
-// most draws of large footprints. The cached kernel (glint_binomial_unbiased_cached, the grid's)
-// keeps its cache instead.
+// most draws of large footprints. Elsewhere, where the middle is sure and its parameters need no
+// ends, the C++ kernel draws it without building the gates and the setup's structs
+// (glint_binomial_unbiased_sure_middle; GLSL keeps the one path, which inlines the table read
+// once). The cached kernel (glint_binomial_unbiased_cached, the grid's) keeps its cache instead.
 // Sparse glints (N p << 1), the common case, then cost two comparisons. Where the middle is
 // drawn, its setup (step 4) costs a table read (N < 32: a log2, two sqrt and 16 node pairs, and
 // an exp), a log2, two sqrt and 21 to 24 polynomial terms per output in the band, or a sqrt and

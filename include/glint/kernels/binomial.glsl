@@ -1148,20 +1148,23 @@ GLINT_FN glint_binomial_middle glint_binomial_unbiased_setup(real N, real p, int
 GLINT_FN real glint_binomial_unbiased_middle(glint_binomial_middle q, real N2, real u2) {
     // Mirrored for the upper end, so that p -> 1 - p, u2 -> 1 - u2 swaps n and n_bar.
     real u_near = (q.lower > real(0.5)) ? u2 : real(1) - u2;
-    real z = glint_normal_quantile(u_near);
     // From N = 4 on: one rounding of center + sigma z. At N = 1e16 a count's ulp is most of a
     // standard deviation, and rounding the offset first and then adding it to 1 or subtracting it
     // from N - 1 would round twice.
     if (q.span >= real(2)) {
+        real z = glint_normal_quantile(u_near);
         real s = (q.lower > real(0.5)) ? z : -z;
         return clamp(q.center + q.sigma * s, real(1), N2 - real(1));
     }
-    real offset = min(max(q.sigma * q.t + q.sigma * z, real(0)), q.span);
-    // Up to N = 3 the middle is the two-point law of counts 1 and N - 1 (exact at N = 3); from N = 3
-    // to 4 it blends into the Gaussian law comonotonically (same u), which keeps the mean and the
-    // law continuous in N.
+    // Up to N = 3 the middle is the two-point law of counts 1 and N - 1 (exact at N = 3), without
+    // the quantile (the blend below would weigh it 0); from N = 3 to 4 it blends into the Gaussian
+    // law comonotonically (same u), which keeps the mean and the law continuous in N.
     real two_point = (u_near >= real(1) - q.two_point) ? q.span : real(0);
-    offset = mix(two_point, offset, clamp(q.span - real(1), real(0), real(1)));
+    real offset = two_point;
+    if (q.span > real(1)) {
+        real gaussian = min(max(q.sigma * q.t + q.sigma * glint_normal_quantile(u_near), real(0)), q.span);
+        offset = mix(two_point, gaussian, clamp(q.span - real(1), real(0), real(1)));
+    }
     return (q.lower > real(0.5)) ? real(1) + offset : (N2 - real(1)) - offset;
 }
 

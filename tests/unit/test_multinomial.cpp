@@ -123,10 +123,62 @@ TEST_CASE("the split tree: node q in the order the draw visits the nodes, the pr
     for (std::uint32_t i = 0; i < 200; ++i) {
         auto c1 = MK::glint_binomial_empty_cache(), c2 = MK::glint_binomial_empty_cache();
         const glm::uvec3 seed(i, 3u, 4u);
-        const auto u = MK::glint_multinomial_uniforms(seed, 0);
+        const auto u = MK::glint_multinomial_node_words(seed, 0);
         const auto a = MK::glint_multinomial_draw(37.5, t, seed, u, MK::GLINT_BINOMIAL_UNBIASED, MK::GLINT_POW_LOG1P, c1);
         const auto b = MK::glint_multinomial_from_root(37.5, pr, 7, seed, u, MK::GLINT_BINOMIAL_UNBIASED, MK::GLINT_POW_LOG1P, c2);
         for (int k = 0; k < 8; ++k) REQUIRE(a.count[k] == b.count[k]);
         REQUIRE(a.rest == b.rest);
+    }
+}
+
+namespace {
+
+// glint_multinomial_exact_split lane by lane: trial i's uniform X_i as a 32-bit integer whose
+// digit k (from the most significant) is bit i mod 32 of word k of its lane group's sequence
+// (lanes 0..31 from words.x, 32..63 from words.z, steps of words.y | 1), compared with q 2^32.
+double exact_split_by_lanes(double n, double q, glm::uvec3 words) {
+    if (!(q > 0) || !(n > 0)) return 0;
+    if (q >= 1) return n;
+    const int whole = static_cast<int>(n);
+    const double frac = n - whole;
+    const auto q_bits = static_cast<std::uint32_t>(q * 4294967296.0);
+    const std::uint32_t step = words.y | 1u;
+    double left = 0;
+    for (int lane = 0; lane <= whole; ++lane) {
+        const std::uint32_t start = lane < 32 ? words.x : words.z;
+        std::uint32_t x = 0;
+        for (std::uint32_t k = 0; k < 32; ++k) x |= ((glint::hash_u32(start + k * step) >> (lane % 32)) & 1u) << (31 - k);
+        if (x < q_bits) left += (lane < whole) ? 1.0 : frac;
+    }
+    return left;
+}
+
+}  // namespace
+
+TEST_CASE("the exact split draws each trial from its own 32 digits, as a lane-by-lane comparison does") {
+    using MK = glint::detail::glsl::kernels<double>;
+    long checked = 0, differ = 0;
+    double left_sum = 0, expected_sum = 0;
+    for (double n : {0.0, 0.4, 1.0, 1.75, 2.0, 7.0, 19.5, 31.0, 31.5, 32.0, 40.25, 63.0})
+        for (double q : {0.0, 1e-9, 0.013, 0.3, 0.5, 0.77, 0.999, 1.0})
+            for (std::uint32_t i = 0; i < 300; ++i) {
+                const glm::uvec3 words = glint::pcg3d(glm::uvec3(i, static_cast<std::uint32_t>(n * 4), static_cast<std::uint32_t>(q * 1e6)));
+                const double a = MK::glint_multinomial_exact_split(n, q, words);
+                const double b = exact_split_by_lanes(n, q, words);
+                differ += a != b;
+                ++checked;
+                left_sum += a;
+                expected_sum += n * q;
+            }
+    MESSAGE(checked << " splits, " << differ << " differ from the lane-by-lane draw");
+    CHECK(checked == 12 * 8 * 300);
+    CHECK(differ == 0);
+    CHECK(left_sum == doctest::Approx(expected_sum).epsilon(0.02));  // the draws are not all 0 or n
+    // float and double draw the same lanes (q 2^32 is exact in both; n - floor(n) too).
+    using MF = glint::detail::glsl::kernels<float>;
+    for (std::uint32_t i = 0; i < 2000; ++i) {
+        const glm::uvec3 words = glint::pcg3d(glm::uvec3(i, 5u, 6u));
+        const float n = 0.25f * static_cast<float>(i % 253), q = glint::unit_from_bits<float>(words.z);
+        REQUIRE(static_cast<double>(MF::glint_multinomial_exact_split(n, q, words)) == MK::glint_multinomial_exact_split(n, static_cast<double>(q), words));
     }
 }

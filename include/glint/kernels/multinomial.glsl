@@ -19,8 +19,8 @@
 // probability q), and the root too where N is from 2 to 63 and N total >= 1; so for a whole N
 // up to 63 the counts follow the multinomial law itself, not a chain of Gaussians. Larger nodes,
 // and sparse roots, use the mean-preserving sampler. Against the sampler at every node this
-// made the IBL grid's estimates 22% (K = 4) and 27% (K = 8) fewer instructions
-// (bench/glint_frame_loop ibl K 1 under callgrind: 63.3M to 49.1M, 119.0M to 87.1M).
+// made the IBL grid's estimates 16% (K = 4) and 20% (K = 8) fewer instructions
+// (bench/glint_frame_loop ibl K 1 under callgrind: 63.3M to 53.1M, 119.0M to 95.2M).
 
 struct glint_multinomial_probabilities {
     real p[8];

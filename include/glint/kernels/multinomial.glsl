@@ -14,13 +14,19 @@
 // (a real count such as 1.37, or 0 or 1) sends all of it left with probability q and right
 // otherwise, which is exact for N_node = 0 and 1 and keeps the mean N_node q for any real N_node.
 //
-// The mean-preserving variant draws every node of up to 63 trials exactly
+// The mean-preserving variant draws every node of 4 to 63 trials exactly
 // (glint_multinomial_exact_split: floor(n) trials and one of weight frac(n), each left with
-// probability q), and the root too where N is from 2 to 63 and N total >= 1; so for a whole N
-// up to 63 the counts follow the multinomial law itself, not a chain of Gaussians. Larger nodes,
-// and sparse roots, use the mean-preserving sampler. Against the sampler at every node this
-// made the IBL grid's estimates 16% (K = 4) and 20% (K = 8) fewer instructions
-// (bench/glint_frame_loop ibl K 1 under callgrind: 63.3M to 53.1M, 119.0M to 95.2M).
+// probability q), and the root too where N is from 4 to 63 and N total >= 1; below 4 trials its
+// sampler is exact for whole N already (the two-point law) and cheaper. So for a whole N up to
+// 63 the counts follow the multinomial law itself, not a chain of Gaussians. Larger nodes, and
+// sparse roots, use the mean-preserving sampler. Against the sampler at every node this
+// made the IBL grid's estimates 19% (K = 4) and 22% (K = 8) fewer instructions
+// (bench/glint_frame_loop ibl K 1 under callgrind: 63.3M to 51.4M, 119.0M to 92.4M). Exact draws
+// from 2 trials made glint_report's multinomial times over the binomial grid worse (median
+// 45.4 ns at K = 4 against 36.8; at N = 2 twice the sampler's); exact draws of 4 to 31 trials
+// only (one lane group) made examples/gl/glint_gl's IBL frames on llvmpipe (192 x 120) 15%
+// slower than the sampler's (288 against 250 ms at K = 4, three alternating runs); 4 to 63, as
+// here: 260 to 277 against 241 to 251 ms, 452 to 472 against 424 to 436 at K = 8.
 
 struct glint_multinomial_probabilities {
     real p[8];
@@ -60,7 +66,8 @@ GLINT_FN vec2 glint_multinomial_uniforms(uvec3 seed, int node) {
 // b from its third, steps of the odd second), so that neither depends on how many words the
 // other drew. One loop for both groups: as two loops, one per group, the IBL scene of
 // examples/gl/glint_gl took about 310 instead of 245 ms a K = 4 frame on llvmpipe (192 x 120).
-// Up to 64 trials; the caller draws larger nodes with the sampler.
+// Up to 64 trials; the caller draws larger nodes with the sampler, and smaller ones (below 4).
+GLINT_CONST(real) GLINT_MULTINOMIAL_EXACT_SPLIT_MIN = real(4);
 GLINT_CONST(real) GLINT_MULTINOMIAL_EXACT_SPLIT_MAX = real(63);
 
 GLINT_FN real glint_multinomial_exact_split(real n, real q, uvec3 words) {
@@ -188,7 +195,7 @@ GLINT_FN void glint_multinomial_split_nodes(real positive, glint_multinomial_tre
         if (n > real(0)) {  // an empty node splits into empty halves: no hash, no draw
             uvec3 h = glint_multinomial_node_words(seed, head + 1);
             vec2 v = vec2(glint_open_unit_from_bits(h.x), glint_open_unit_from_bits(h.y));
-            if (variant == GLINT_BINOMIAL_UNBIASED && n <= GLINT_MULTINOMIAL_EXACT_SPLIT_MAX) {
+            if (variant == GLINT_BINOMIAL_UNBIASED && n >= GLINT_MULTINOMIAL_EXACT_SPLIT_MIN && n <= GLINT_MULTINOMIAL_EXACT_SPLIT_MAX) {
                 n_left = glint_multinomial_exact_split(n, q, h);
             } else {
                 n_left = (v.x < q) ? n : real(0);  // below 2: all of it to one side
@@ -221,16 +228,16 @@ GLINT_FN void glint_multinomial_split_nodes(real positive, glint_multinomial_tre
 // The root of a draw: N trials drawn between the K bins (probability `total`) and the rest, from
 // the root's words (glint_multinomial_node_words(seed, 0)). Zeroes the counts, sets result.rest,
 // and returns the bins' trials for glint_multinomial_split_nodes. The mean-preserving hierarchy
-// draws the root exactly (glint_multinomial_exact_split) where N is from 2 to 63 and N total >= 1;
+// draws the root exactly (glint_multinomial_exact_split) where N is from 4 to 63 and N total >= 1;
 // elsewhere with the sampler, from the words' uniforms (u1 from the first). Where N total >= 1 the
 // sampler's skip test (glint_surely_no_success on u1, grid.glsl) never fires, so a caller that
-// skips roots by it skips only sampler draws that surely keep nothing. Below N = 2 the sampler
-// dithers to whole counts (KK25 Fig. 4), which the exact draw of a real N would not.
+// skips roots by it skips only sampler draws that surely keep nothing. (Below N = 4 the sampler
+// is exact for whole N, and for N < 2 dithers to whole counts, KK25 Fig. 4.)
 GLINT_FN real glint_multinomial_root(real N, real total, uvec3 root_words, int variant, int method, GLINT_INOUT(glint_binomial_cache) root_cache,
                                      GLINT_OUT(glint_multinomial_counts) result) {
     for (int k = 0; k < 8; ++k) result.count[k] = real(0);
     N = max(N, real(0));
-    if (variant == GLINT_BINOMIAL_UNBIASED && N >= real(2) && N <= GLINT_MULTINOMIAL_EXACT_SPLIT_MAX && N * total >= real(1)) {
+    if (variant == GLINT_BINOMIAL_UNBIASED && N >= GLINT_MULTINOMIAL_EXACT_SPLIT_MIN && N <= GLINT_MULTINOMIAL_EXACT_SPLIT_MAX && N * total >= real(1)) {
         real kept = glint_multinomial_exact_split(N, total, root_words);
         result.rest = N - kept;
         return kept;

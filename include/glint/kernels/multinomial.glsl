@@ -42,12 +42,6 @@ GLINT_FN uvec3 glint_multinomial_node_words(uvec3 seed, int node) {
     return glint_pcg3d(uvec3(seed.x, seed.y, seed.z + uint(node) * 0x9e3779b9u));
 }
 
-// The uniform pair for tree node `node` from its words.
-GLINT_FN vec2 glint_multinomial_uniforms(uvec3 seed, int node) {
-    uvec3 h = glint_multinomial_node_words(seed, node);
-    return vec2(glint_open_unit_from_bits(h.x), glint_open_unit_from_bits(h.y));
-}
-
 // The mean-preserving hierarchy's exact split (of a node, or of the root against the rest): n
 // trials are floor(n) whole trials and, where n is not an integer, one more of weight frac(n);
 // each goes left with probability q, independently of the others. The left count is
@@ -66,14 +60,15 @@ GLINT_FN vec2 glint_multinomial_uniforms(uvec3 seed, int node) {
 // b from its third, steps of the odd second), so that neither depends on how many words the
 // other drew. One loop for both groups: as two loops, one per group, the IBL scene of
 // examples/gl/glint_gl took about 310 instead of 245 ms a K = 4 frame on llvmpipe (192 x 120).
-// Up to 64 trials; the caller draws larger nodes with the sampler, and smaller ones (below 4).
+// For n up to 63 (above, whole trials beyond 63 are dropped); the caller draws larger nodes with
+// the sampler, and smaller ones (below 4).
 GLINT_CONST(real) GLINT_MULTINOMIAL_EXACT_SPLIT_MIN = real(4);
 GLINT_CONST(real) GLINT_MULTINOMIAL_EXACT_SPLIT_MAX = real(63);
 
 GLINT_FN real glint_multinomial_exact_split(real n, real q, uvec3 words) {
     if (!(q > real(0)) || !(n > real(0))) return real(0);
     if (q >= real(1)) return n;
-    int whole = int(n);  // floor: 0 < n <= 63
+    int whole = int(min(n, GLINT_MULTINOMIAL_EXACT_SPLIT_MAX));  // floor for 0 < n <= 63, the range it is for
     real frac = n - real(whole);
     uint q_bits = uint(q * real(4294967296.0));  // q 2^32, exact in float, truncated (q < 1)
     // Lanes 0 .. whole - 1 are the whole trials, lane `whole` the fractional one; lanes 0 .. 31

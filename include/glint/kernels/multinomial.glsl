@@ -189,10 +189,10 @@ GLINT_FN void glint_multinomial_split_nodes(real positive, glint_multinomial_tre
         real n_left = real(0);
         if (n > real(0)) {  // an empty node splits into empty halves: no hash, no draw
             uvec3 h = glint_multinomial_node_words(seed, head + 1);
-            vec2 v = vec2(glint_open_unit_from_bits(h.x), glint_open_unit_from_bits(h.y));
             if (variant == GLINT_BINOMIAL_UNBIASED && n >= GLINT_MULTINOMIAL_EXACT_SPLIT_MIN && n <= GLINT_MULTINOMIAL_EXACT_SPLIT_MAX) {
                 n_left = glint_multinomial_exact_split(n, q, h);
             } else {
+                vec2 v = vec2(glint_open_unit_from_bits(h.x), glint_open_unit_from_bits(h.y));
                 n_left = (v.x < q) ? n : real(0);  // below 2: all of it to one side
                 if (n >= real(2)) {
                     glint_binomial split = glint_binomial_variant(variant, n, q, v.x, v.y, method);

@@ -38,6 +38,23 @@ GLINT_FN uint glint_hash_u32(uint x) {
     return x;
 }
 
+// floor(x) for |x| <= 2^30 (the callers clamp or bound x): GLSL's floor; in C++ a truncation to
+// int and a correction, because without SSE4.1 (the default x86-64 target) GCC expands std::floor
+// inline into about 20 instructions, or calls libm. Exact: int(x) truncates toward zero, and
+// every integer up to 2^30 is a float.
+GLINT_FN real glint_floor_bounded(real x) {
+#if defined(GLINT_GLSL)
+    return floor(x);
+#else
+    real t = real(int(x));
+    return (t > x) ? t - real(1) : t;
+#endif
+}
+
+GLINT_FN vec2 glint_floor_bounded(vec2 x) {
+    return vec2(glint_floor_bounded(x.x), glint_floor_bounded(x.y));
+}
+
 // The number of bits set in x: GLSL's bitCount; in C++ the same sum of bit fields in 12
 // instructions, inline (GLM's bitCount loops over masks, and GCC's __builtin_popcount without
 // -mpopcnt calls libgcc: 21 instructions and a call).

@@ -73,9 +73,9 @@ GLINT_FN glint_lattice glint_footprint_lattice(glint_footprint f, real lod_scale
     real minor = max(max(f.minor, major / real(16)), real(1e-30));
     real lod = clamp(log2(minor * max(lod_scale, real(1e-30))), GLINT_MIN_LOD, GLINT_MAX_LOD);
     real rho = clamp(log2(major / minor), real(0), real(GLINT_MAX_RATIO_LEVEL));
-    int r0 = min(int(floor(rho)), GLINT_MAX_RATIO_LEVEL - 1);
+    int r0 = min(int(glint_floor_bounded(rho)), GLINT_MAX_RATIO_LEVEL - 1);
     real tr = rho - real(r0);
-    real l0 = floor(lod);
+    real l0 = glint_floor_bounded(lod);
     real tl = lod - l0;
     // Triangle in the (angle, tr) strip: vertex keys level * 1024 + bin, barycentrics.
     ivec3 key;
@@ -85,14 +85,14 @@ GLINT_FN glint_lattice glint_footprint_lattice(glint_footprint f, real lod_scale
         // Level 0 is isotropic: one vertex whatever the angle (which is ill-defined for round
         // footprints), fanned to level 1's 4 bins: weights 1 - tr and tr split linearly in angle.
         real x = f.angle * real(4) / GLINT_PI;
-        int j = min(int(floor(x)), 3);
+        int j = min(int(glint_floor_bounded(x)), 3);
         real fx = x - real(j);
         key = ivec3(lo, hi + j, hi + ((j + 1) & 3));
         bary = vec3(real(1) - tr, tr * (real(1) - fx), tr * fx);
     } else {
         int n0 = 2 << r0;  // bins at level r0 >= 1 (level 1: 4, as DB23's 45 degrees)
         real x = f.angle * real(n0) / GLINT_PI;
-        int k = min(int(floor(x)), n0 - 1);
+        int k = min(int(glint_floor_bounded(x)), n0 - 1);
         real fx = x - real(k);
         int kn = (k + 1 == n0) ? 0 : k + 1;
         int t0 = 2 * k, t1 = 2 * k + 1, t2 = (2 * k + 2 == 2 * n0) ? 0 : 2 * k + 2;
@@ -167,8 +167,8 @@ struct glint_triangle {
 
 GLINT_FN glint_triangle glint_triangle_grid(vec2 q) {
     vec2 s = vec2(q.x - q.y * real(0.577350269189625764509), q.y * real(1.15470053837925152902));  // 1/sqrt(3), 2/sqrt(3)
-    s = clamp(s, vec2(real(-1073741824)), vec2(real(1073741824)));  // keep floor() within int
-    vec2 i = floor(s);
+    s = clamp(s, vec2(real(-1073741824)), vec2(real(1073741824)));  // keep glint_floor_bounded within its range
+    vec2 i = glint_floor_bounded(s);
     vec2 f = s - i;
     ivec2 base = ivec2(int(i.x), int(i.y));
     glint_triangle t;
@@ -225,7 +225,7 @@ struct glint_grid_estimate {
 // The bilinear slope-grid cell around s: corner slopes and weights.
 GLINT_FN vec4 glint_slope_weights(vec2 s, real cell, GLINT_OUT(ivec2) base) {
     vec2 g = clamp(s / max(cell, real(1e-30)), vec2(real(-1073741824)), vec2(real(1073741824)));
-    vec2 i = floor(g);
+    vec2 i = glint_floor_bounded(g);
     vec2 f = g - i;
     base = ivec2(int(i.x), int(i.y));
     return vec4((real(1) - f.x) * (real(1) - f.y), f.x * (real(1) - f.y), (real(1) - f.x) * f.y, f.x * f.y);

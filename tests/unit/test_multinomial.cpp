@@ -2,6 +2,7 @@
 #include <doctest/doctest.h>
 
 #include <cmath>
+#include <numeric>
 #include <string>
 
 #include <glint/multinomial.hpp>
@@ -181,4 +182,72 @@ TEST_CASE("the exact split draws each trial from its own 32 digits, as a lane-by
         const float n = 0.25f * static_cast<float>(i % 253), q = glint::unit_from_bits<float>(words.z);
         REQUIRE(static_cast<double>(MF::glint_multinomial_exact_split(n, q, words)) == MK::glint_multinomial_exact_split(n, static_cast<double>(q), words));
     }
+}
+
+namespace {
+
+// glint_multinomial_exact_all lane by lane: trial i's uniform X_i as a 32-bit integer (digit k is
+// bit i of word k of the root's sequence: words.x, steps of words.y | 1), placed in the first bin
+// k with X_i < c_k, c_k = sum over m <= k of floor(p_m 2^32) in 64 bits (so c_k >= 2^32 holds every
+// trial), else in the rest; the trial in lane floor(N) weighs frac(N).
+template <std::size_t K>
+std::array<double, K + 1> exact_all_by_lanes(double N, const std::array<double, K>& p, glm::uvec3 words) {
+    std::array<double, K + 1> counts{};  // counts[K] is the rest
+    const int whole = static_cast<int>(N);
+    const double frac = N - whole;
+    std::array<std::uint64_t, K> c{};
+    std::uint64_t sum = 0;
+    for (std::size_t k = 0; k < K; ++k) c[k] = sum += static_cast<std::uint64_t>(std::ldexp(p[k], 32));
+    for (int lane = 0; lane <= whole; ++lane) {
+        std::uint64_t x = 0;
+        for (std::uint32_t k = 0; k < 32; ++k) x |= static_cast<std::uint64_t>((glint::hash_u32(words.x + k * (words.y | 1u)) >> lane) & 1u) << (31 - k);
+        std::size_t bin = 0;
+        while (bin < K && !(x < c[bin])) ++bin;
+        counts[bin] += (lane < whole) ? 1.0 : frac;
+    }
+    return counts;
+}
+
+template <std::size_t K>
+void check_exact_all(long& checked, long& differ, double& first_bin, double& first_expected) {
+    for (double N : {4.0, 5.5, 6.0, 13.0, 19.25, 30.0, 31.0})
+        for (std::uint32_t trial = 0; trial < 200; ++trial) {
+            const glm::uvec3 h = glint::pcg3d(glm::uvec3(trial, static_cast<std::uint32_t>(K), static_cast<std::uint32_t>(N * 4)));
+            std::array<double, K> p;
+            double total = 0;
+            for (std::size_t k = 0; k < K; ++k) {
+                const double u = glint::unit_from_bits<double>(glint::pcg3d(glm::uvec3(h.x, h.y, static_cast<std::uint32_t>(k))).z);
+                // Zeros, tiny, and ordinary probabilities; every 8th set sums to exactly 1.
+                p[k] = (u < 0.1) ? 0.0 : (u < 0.2) ? 1e-9 : u / static_cast<double>(K);
+                total += p[k];
+            }
+            if (trial % 8 == 0 && total > 0)
+                for (double& x : p) x = std::ldexp(std::floor(std::ldexp(x / total, 20)), -20);  // dyadic, sum 1 - a few 2^-20
+            if (trial % 16 == 0) p[K - 1] = 1.0 - std::accumulate(p.begin(), p.end() - 1, 0.0);  // exactly 1 where dyadic
+            if (N * std::accumulate(p.begin(), p.end(), 0.0) < 1) continue;  // the root's exact range only
+            const glm::uvec3 seed(trial, 17u, static_cast<std::uint32_t>(K));
+            const auto a = glint::multinomial<K>(N, p, seed);
+            const auto b = exact_all_by_lanes<K>(N, p, glint::pcg3d(seed));  // the root's words: glint_multinomial_node_words(seed, 0)
+            bool same = a.rest == b[K];
+            for (std::size_t k = 0; k < K; ++k) same = same && a.count[k] == b[k];
+            differ += !same;
+            ++checked;
+            first_bin += a.count[0];
+            first_expected += N * p[0];
+        }
+}
+
+}  // namespace
+
+TEST_CASE("the one-pass draw puts each trial in the bin its 32 digits fall in, as a lane-by-lane comparison does") {
+    long checked = 0, differ = 0;
+    double first_bin = 0, first_expected = 0;
+    check_exact_all<2>(checked, differ, first_bin, first_expected);
+    check_exact_all<3>(checked, differ, first_bin, first_expected);
+    check_exact_all<7>(checked, differ, first_bin, first_expected);
+    check_exact_all<8>(checked, differ, first_bin, first_expected);
+    MESSAGE(checked << " draws (N from 4 to 31, K = 2, 3, 7, 8), " << differ << " differ from the lane-by-lane draw");
+    CHECK(checked >= 4000);
+    CHECK(differ == 0);
+    CHECK(first_bin == doctest::Approx(first_expected).epsilon(0.05));  // the draws are not all in one bin
 }

@@ -27,6 +27,15 @@
 // only (one lane group) made examples/gl/glint_gl's IBL frames on llvmpipe (192 x 120) 15%
 // slower than the sampler's (288 against 250 ms at K = 4, three alternating runs); 4 to 63, as
 // here: 260 to 277 against 241 to 251 ms, 452 to 472 against 424 to 436 at K = 8.
+//
+// Where the root is exact and N is at most 31, the whole draw is one bit-sliced pass instead of
+// the tree (glint_multinomial_exact_all: each trial's digits against the K cumulative
+// probabilities at once, one loop for the root and every node): the same law, other draws. Against
+// the tree of exact splits it took the IBL estimates from 50.5M to 49.2M instructions at K = 4 and
+// from 91.1M to 83.8M at K = 8 (glint_frame_loop ibl K 1 under callgrind), glint_report's IBL
+// glint frames from 10.7 and 12.5 ms to 9.1 and 9.7 ms at K = 8 (K = 4 within the noise, 6.5 to
+// 8.4 ms both; alternating runs), and examples/gl/glint_gl's IBL frames on llvmpipe (192 x 120)
+// from 246 to 234 ms (K = 4) and from 437 to 391 ms (K = 8), two alternating runs each.
 
 struct glint_multinomial_probabilities {
     real p[8];
@@ -220,6 +229,88 @@ GLINT_FN void glint_multinomial_split_nodes(real positive, glint_multinomial_tre
     }
 }
 
+// The whole draw in one bit-sliced pass, where the root is exact and N is at most 31 (one lane
+// group): every trial's uniform X_i is compared, digit by digit as in
+// glint_multinomial_exact_split, with the K cumulative probabilities c_k = p_0 + ... + p_k (each
+// p_k rounded down to a multiple of 2^-32, summed exactly in 32-bit words); trial i lands in bin
+// k where c_(k-1) <= X_i < c_k, and in the rest where X_i >= c_(K-1). One word sequence decides
+// all K comparisons, so the K - 1 splits of the tree and the root cost one loop of about
+// log2(lanes K) + 1.3 words instead of one such loop per node. The law is the multinomial's, as the
+// tree's exact splits give it: the fractional trial (weight frac(N), lane floor(N)) lands in bin k
+// with probability p_k. Zeroes the counts and sets every count and the rest.
+GLINT_CONST(real) GLINT_MULTINOMIAL_EXACT_ALL_MAX = real(31);
+
+GLINT_FN void glint_multinomial_exact_all(real N, glint_multinomial_tree t, uvec3 words, GLINT_INOUT(glint_multinomial_counts) result) {
+    int whole = int(min(N, GLINT_MULTINOMIAL_EXACT_ALL_MAX));  // floor for 0 < N <= 31, the range it is for
+    real frac = N - real(whole);
+    uint lanes = (2u << uint(whole)) - 1u;  // the whole trials and the fractional one, bit `whole`
+    uint frac_lane = 1u << uint(whole);
+    uint threshold[8];
+    uint open[8];
+    uint below[8];
+    uint sum = 0u;
+    bool full = false;  // c_k >= 1: every trial is below it
+    for (int k = 0; k < 8; ++k) {
+        real scaled = (k < t.K) ? t.p[k] * real(4294967296.0) : real(0);  // p_k 2^32, exact in float
+        bool whole_word = scaled >= real(4294967296.0);
+        uint add = whole_word ? 0u : uint(scaled);
+        uint next = sum + add;
+        full = full || whole_word || next < sum;  // the sum passed 2^32
+        sum = next;
+        threshold[k] = sum;
+        open[k] = (full || k >= t.K) ? 0u : lanes;
+        below[k] = full ? lanes : 0u;
+    }
+    uint state = words.x;
+    uint step = words.y | 1u;
+    // Two copies of the loop, for at most 4 and at most 8 bins, each with a constant trip count
+    // over the thresholds, so that the C++ compiler unrolls it and keeps its words in registers.
+    if (t.K <= 4) {
+        for (int digit = 0; digit < 32; ++digit) {
+            if ((open[0] | open[1] | open[2] | open[3]) == 0u) break;
+            uint word = glint_hash_u32(state);
+            state += step;
+            for (int k = 0; k < 4; ++k) {
+                uint c_digit = 0u - (threshold[k] >> 31u);  // all ones where c_k's digit is 1
+                threshold[k] <<= 1u;
+                uint decided = open[k] & (word ^ c_digit);  // the first digit that differs from c_k's
+                below[k] |= decided & c_digit;              // ... is 0 where c_k's is 1: below c_k
+                open[k] &= ~decided;
+            }
+        }
+    } else {
+        for (int digit = 0; digit < 32; ++digit) {
+            if ((open[0] | open[1] | open[2] | open[3] | open[4] | open[5] | open[6] | open[7]) == 0u) break;
+            uint word = glint_hash_u32(state);
+            state += step;
+            for (int k = 0; k < 8; ++k) {
+                uint c_digit = 0u - (threshold[k] >> 31u);
+                threshold[k] <<= 1u;
+                uint decided = open[k] & (word ^ c_digit);
+                below[k] |= decided & c_digit;
+                open[k] &= ~decided;
+            }
+        }
+    }
+    uint previous = 0u;
+    real kept = real(0);
+    for (int k = 0; k < 8; ++k) {
+        uint in_bin = (k < t.K) ? (below[k] & ~previous) : 0u;
+        real count = real(glint_bit_count(in_bin & ~frac_lane)) + (((in_bin & frac_lane) != 0u) ? frac : real(0));
+        result.count[k] = count;
+        kept += count;
+        previous = (k < t.K) ? below[k] : previous;
+    }
+    result.rest = N - kept;
+}
+
+// Where the mean-preserving draw takes glint_multinomial_exact_all: N from 4 to 31 and N total >= 1
+// (the root's exact range, within one lane group).
+GLINT_FN bool glint_multinomial_exact_all_applies(real N, real total, int variant) {
+    return variant == GLINT_BINOMIAL_UNBIASED && N >= GLINT_MULTINOMIAL_EXACT_SPLIT_MIN && N <= GLINT_MULTINOMIAL_EXACT_ALL_MAX &&
+           N * total >= real(1);
+}
+
 // The root of a draw: N trials drawn between the K bins (probability `total`) and the rest, from
 // the root's words (glint_multinomial_node_words(seed, 0)). Zeroes the counts, sets result.rest,
 // and returns the bins' trials for glint_multinomial_split_nodes. The mean-preserving hierarchy
@@ -251,6 +342,10 @@ GLINT_FN real glint_multinomial_root(real N, real total, uvec3 root_words, int v
 GLINT_FN glint_multinomial_counts glint_multinomial_draw(real N, glint_multinomial_tree t, uvec3 seed, uvec3 root_words, int variant, int method,
                                                         GLINT_INOUT(glint_binomial_cache) root_cache) {
     glint_multinomial_counts result;
+    if (glint_multinomial_exact_all_applies(N, t.total, variant)) {
+        glint_multinomial_exact_all(N, t, root_words, result);
+        return result;
+    }
     real kept = glint_multinomial_root(N, t.total, root_words, variant, method, root_cache, result);
     if (kept > real(0)) glint_multinomial_split_nodes(kept, t, seed, variant, method, result);
     return result;
@@ -262,6 +357,10 @@ GLINT_FN glint_multinomial_counts glint_multinomial_from_root(real N, glint_mult
                                                              GLINT_INOUT(glint_binomial_cache) root_cache) {
     glint_multinomial_tree t = glint_multinomial_tree_root(probs, K);
     glint_multinomial_counts result;
+    if (glint_multinomial_exact_all_applies(N, t.total, variant)) {
+        glint_multinomial_exact_all(N, t, root_words, result);
+        return result;
+    }
     real kept = glint_multinomial_root(N, t.total, root_words, variant, method, root_cache, result);
     if (kept > real(0)) {
         glint_multinomial_tree_splits(t);

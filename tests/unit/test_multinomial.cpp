@@ -75,6 +75,15 @@ TEST_CASE("bad probabilities are tamed: negative as 0, a sum above 1 scaled down
     CHECK(c.count[1] / 1e6f == doctest::Approx(0.75).epsilon(0.01));
     const auto d = glint::multinomial<8>(1e16f, std::array<float, 8>{}, glm::uvec3(4u, 5u, 6u));
     CHECK(d.rest == 1e16f);
+    // The same within the one-pass draw's range (N from 4 to 31), where the scaled probabilities
+    // sum to exactly 1 (their 32-bit sum wraps to 0).
+    for (std::uint32_t i = 0; i < 100; ++i) {
+        const auto e = glint::multinomial<4>(20.0f, std::array<float, 4>{-1.0f, 3.0f, 1.0f, 0.0f}, glm::uvec3(i, 2u, 3u));
+        REQUIRE(e.count[0] == 0.0f);
+        REQUIRE(e.count[3] == 0.0f);
+        REQUIRE(e.rest == 0.0f);
+        REQUIRE(e.count[1] + e.count[2] == 20.0f);
+    }
 }
 
 TEST_CASE("a root cache gives exactly the uncached counts (runs of three draws at one N, as the IBL grid makes them)") {

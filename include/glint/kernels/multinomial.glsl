@@ -253,7 +253,7 @@ GLINT_FN void glint_multinomial_exact_all(real N, glint_multinomial_tree t, uvec
     for (int k = 0; k < 8; ++k) {
         real scaled = (k < t.K) ? t.p[k] * real(4294967296.0) : real(0);  // p_k 2^32, exact in float
         bool whole_word = scaled >= real(4294967296.0);
-        uint add = whole_word ? 0u : uint(scaled);
+        uint add = (whole_word || !(scaled >= real(0))) ? 0u : uint(scaled);  // NaN as 0, as the split does
         uint next = sum + add;
         full = full || whole_word || next < sum;  // the sum passed 2^32
         sum = next;

@@ -31,8 +31,8 @@
 // Where the root is exact and N is at most 31, the whole draw is one bit-sliced pass instead of
 // the tree (glint_multinomial_exact_all: each trial's digits against the K cumulative
 // probabilities at once, one loop for the root and every node): the same law, other draws. Against
-// the tree of exact splits it took the IBL estimates from 50.5M to 49.2M instructions at K = 4 and
-// from 91.1M to 83.8M at K = 8 (glint_frame_loop ibl K 1 under callgrind), glint_report's IBL
+// the tree of exact splits it took the IBL estimates from 50.5M to 49.5M instructions at K = 4 and
+// from 91.1M to 84.6M at K = 8 (glint_frame_loop ibl K 1 under callgrind), glint_report's IBL
 // glint frames from 10.7 and 12.5 ms to 9.1 and 9.7 ms at K = 8 (K = 4 within the noise, 6.5 to
 // 8.4 ms both; alternating runs), and examples/gl/glint_gl's IBL frames on llvmpipe (192 x 120)
 // from 246 to 234 ms (K = 4) and from 437 to 391 ms (K = 8), two alternating runs each.

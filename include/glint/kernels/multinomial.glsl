@@ -265,6 +265,9 @@ GLINT_FN void glint_multinomial_exact_all(real N, glint_multinomial_tree t, uvec
     uint step = words.y | 1u;
     // Two copies of the loop, for at most 4 and at most 8 bins, each with a constant trip count
     // over the thresholds, so that the C++ compiler unrolls it and keeps its words in registers.
+    // (One loop over 8 thresholds: 55.8M instructions for the IBL estimates at K = 4 instead of
+    // 49.5M; the step as a function taking the words by reference: 50.0M and 87.0M at K = 8
+    // instead of 84.6M.)
     if (t.K <= 4) {
         for (int digit = 0; digit < 32; ++digit) {
             if ((open[0] | open[1] | open[2] | open[3]) == 0u) break;

@@ -406,3 +406,24 @@ TEST_CASE("one footprint for every light: grid_sample_lights, grid_sample and ib
     check_shared_footprint<float>();
     check_shared_footprint<double>();
 }
+
+TEST_CASE("the grid's bounded floor equals std::floor over its range, in float and double") {
+    using KF = glint::detail::glsl::kernels<float>;
+    using KD = glint::detail::glsl::kernels<double>;
+    std::vector<double> xs = {0.0, -0.0, 0.5, -0.5, 1.0, -1.0, 1e-7, -1e-7, 2.999999, -2.999999, 1073741824.0, -1073741824.0,
+                              1073741823.5, -1073741823.5, 8388607.5, -8388607.5, 24.0, -24.0};
+    for (std::uint32_t i = 0; i < 20000; ++i) {
+        const glm::uvec3 h = glint::pcg3d(glm::uvec3(i, 31u, 7u));
+        const double u = glint::unit_from_bits<double>(h.x) * 2 - 1;
+        xs.push_back(u * std::pow(2.0, 30.0 * glint::unit_from_bits<double>(h.y)));  // magnitudes 1 to 2^30, both signs
+        xs.push_back(std::nextafter(std::round(xs.back()), 0.0));                       // just inside an integer
+    }
+    long differ = 0;
+    for (double x : xs) {
+        const float xf = static_cast<float>(x);
+        differ += KF::glint_floor_bounded(xf) != std::floor(xf);
+        differ += KD::glint_floor_bounded(x) != std::floor(x);
+    }
+    MESSAGE(xs.size() << " values, " << differ << " differ from std::floor");
+    CHECK(differ == 0);
+}

@@ -33,9 +33,10 @@
 // probabilities at once, one loop for the root and every node): the same law, other draws. Against
 // the tree of exact splits it took the IBL estimates from 50.5M to 49.5M instructions at K = 4 and
 // from 91.1M to 84.6M at K = 8 (glint_frame_loop ibl K 1 under callgrind), glint_report's IBL
-// glint frames from 10.7 and 12.5 ms to 9.1 and 9.7 ms at K = 8 (K = 4 within the noise, 6.5 to
-// 8.4 ms both; alternating runs), and examples/gl/glint_gl's IBL frames on llvmpipe (192 x 120)
-// from 246 to 234 ms (K = 4) and from 437 to 391 ms (K = 8), two alternating runs each.
+// glint frames (linear knob) from 10.7 and 12.5 ms to 9.1 and 9.7 ms at K = 8 (K = 4 within the
+// noise: 6.5 and 7.2 ms before, 8.2 and 6.6 after; alternating runs), and examples/gl/glint_gl's
+// IBL frames on llvmpipe (192 x 120) from 246 to 234 ms (K = 4) and from 437 to 391 ms (K = 8),
+// two alternating runs each.
 
 struct glint_multinomial_probabilities {
     real p[8];

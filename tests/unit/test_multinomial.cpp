@@ -143,6 +143,14 @@ TEST_CASE("the split tree: node q in the order the draw visits the nodes, the pr
 
 namespace {
 
+// Lane `lane` (0..31) of a bit-sliced word sequence as one 32-bit uniform: its digit k, from the
+// most significant, is that bit of word k = glint_hash_u32(start + k step).
+std::uint32_t lane_uniform(std::uint32_t start, std::uint32_t step, int lane) {
+    std::uint32_t x = 0;
+    for (std::uint32_t k = 0; k < 32; ++k) x |= ((glint::hash_u32(start + k * step) >> lane) & 1u) << (31 - k);
+    return x;
+}
+
 // glint_multinomial_exact_split lane by lane: trial i's uniform X_i as a 32-bit integer whose
 // digit k (from the most significant) is bit i mod 32 of word k of its lane group's sequence
 // (lanes 0..31 from words.x, 32..63 from words.z, steps of words.y | 1), compared with q 2^32.
@@ -156,9 +164,7 @@ double exact_split_by_lanes(double n, double q, glm::uvec3 words) {
     double left = 0;
     for (int lane = 0; lane <= whole; ++lane) {
         const std::uint32_t start = lane < 32 ? words.x : words.z;
-        std::uint32_t x = 0;
-        for (std::uint32_t k = 0; k < 32; ++k) x |= ((glint::hash_u32(start + k * step) >> (lane % 32)) & 1u) << (31 - k);
-        if (x < q_bits) left += (lane < whole) ? 1.0 : frac;
+        if (lane_uniform(start, step, lane % 32) < q_bits) left += (lane < whole) ? 1.0 : frac;
     }
     return left;
 }
@@ -208,8 +214,7 @@ std::array<double, K + 1> exact_all_by_lanes(double N, const std::array<double, 
     std::uint64_t sum = 0;
     for (std::size_t k = 0; k < K; ++k) c[k] = sum += static_cast<std::uint64_t>(std::ldexp(p[k], 32));
     for (int lane = 0; lane <= whole; ++lane) {
-        std::uint64_t x = 0;
-        for (std::uint32_t k = 0; k < 32; ++k) x |= static_cast<std::uint64_t>((glint::hash_u32(words.x + k * (words.y | 1u)) >> lane) & 1u) << (31 - k);
+        const std::uint64_t x = lane_uniform(words.x, words.y | 1u, lane);
         std::size_t bin = 0;
         while (bin < K && !(x < c[bin])) ++bin;
         counts[bin] += (lane < whole) ? 1.0 : frac;

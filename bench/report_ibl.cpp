@@ -87,9 +87,14 @@ section ibl_section(double min_time) {
                         if (rr >= 1) continue;
                         const glm::vec3 n(px, py, std::sqrt(1 - rr)), d(0, 0, -1);
                         const float cos_o = n.z;
-                        const auto s = env->lookup(glm::reflect(d, n), sa);
-                        float m = 1;
-                        if (mode == 1) {
+                        // Smooth shading reads the radiance alone, glints the K indicators too.
+                        const glm::vec3 r = glm::reflect(d, n);
+                        float m = 1, radiance = 0;
+                        if (mode == 0) {
+                            radiance = env->lookup_radiance(r, sa).x;
+                        } else {
+                            const auto s = env->lookup(r, sa);
+                            radiance = s.radiance.x;
                             glint::grid_params<float> g;
                             g.log_density = 4.0f;
                             g.seed = static_cast<std::uint32_t>(it);
@@ -97,7 +102,7 @@ section ibl_section(double min_time) {
                                                                env->levels(), s.indicators, env->visible_area(cos_o, sa), dh);
                             m = glint::modulation(est);
                         }
-                        acc += env->albedo(cos_o, sa) * s.radiance.x * m;
+                        acc += env->albedo(cos_o, sa) * radiance * m;
                     }
                 benchmark::DoNotOptimize(acc);
             }, min_time * 4);

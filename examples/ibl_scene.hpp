@@ -35,16 +35,20 @@ inline vec3 shade_ibl(const glint::environment& env, const ibl_settings& s, cons
     const float sa = std::sqrt(s.roughness);
     const float cos_o = std::max(glm::dot(-d, ht.n), 1e-4f);
     const vec3 r = glm::reflect(d, ht.n);
-    const auto look = env.lookup(r, sa);
+    vec3 radiance;
     float m = 1.0f;
-    if (!s.smooth) {
+    if (s.smooth) {
+        radiance = env.lookup_radiance(r, sa);  // the K indicators are for the glints only
+    } else {
+        const auto look = env.lookup(r, sa);
+        radiance = look.radiance;
         const auto e = glint::ibl_sample(ht.uv, duvdx, duvdy, ibl_grid(s), env.levels(), look.indicators, env.visible_area(cos_o, sa),
                                          env.total_area(s.roughness));
         m = glint::modulation(e);
     }
     const float albedo = env.albedo(cos_o, sa);
     vec3 L;
-    for (int c = 0; c < 3; ++c) L[c] = glint::fresnel_conductor(silver_eta[c], silver_k[c], cos_o) * albedo * look.radiance[c] * m;
+    for (int c = 0; c < 3; ++c) L[c] = glint::fresnel_conductor(silver_eta[c], silver_k[c], cos_o) * albedo * radiance[c] * m;
     return L;
 }
 
@@ -53,7 +57,7 @@ inline vec3 render_ibl_pixel(const glint::environment& env, const ibl_settings& 
     const float fx = static_cast<float>(x) + 0.5f, fy = static_cast<float>(y) + 0.5f;
     const vec3 d = cam.ray(fx, fy);
     const hit ht = intersect(cam.eye, d);
-    if (!ht.found || !ht.sphere) return env.lookup(d, 0.0f).radiance;
+    if (!ht.found || !ht.sphere) return env.lookup_radiance(d, 0.0f);
     vec2 duvdx, duvdy;
     footprint_derivatives(cam, ht, fx, fy, duvdx, duvdy);
     return shade_ibl(env, s, ht, d, duvdx, duvdy);

@@ -151,7 +151,6 @@ inline vec3 to_local(const hit& h, const vec3& w) { return {glm::dot(w, h.t), gl
 inline vec3 shade(const scene_options& opt, const light_setup& ls, const hit& h, const vec3& wo_world, const vec2& duvdx, const vec2& duvdy,
                   shading_counters& counters) {
     const vec2 alpha(opt.roughness);
-    const float dh = glint::total_area(glint::ndf::ggx, alpha);
     const vec3 wo = to_local(h, wo_world);
     if (!(wo.z > 0)) return vec3(0);
     // The sky mirrored by the sphere (a smooth ambient term, the same with or without glints).
@@ -205,6 +204,9 @@ inline vec3 shade(const scene_options& opt, const light_setup& ls, const hit& h,
         specular = g2 * radiance * glm::dot(hv, wi_c) * d_omega / wo.z;
     if (!(specular > 0)) return result;
     if (!opt.smooth) {
+        // D_H, which only the glints need: per pixel, as with a roughness texture (a material of
+        // one roughness could set it up once), so that the smooth frame does not pay for it.
+        const float dh = glint::total_area(glint::ndf::ggx, alpha);
         glint::grid_params<float> g = lights_grid(opt);
         g.seed += h.sphere ? 1u : 2u;
         const auto light = ls.type == light_type::point ? glint::grid_point_light(glint::ndf::ggx, alpha, dh, hv)

@@ -422,7 +422,7 @@ void cpu_images(const scene& s, const glint::environment* env, int w, int h, con
             vec3 L;
             if (kind == 0) {
                 const vec3 d = cam.ray(static_cast<float>(x) + 0.5f, static_cast<float>(y) + 0.5f);
-                L = s.ibl ? env->lookup(d, 0.0f).radiance : background(d);
+                L = s.ibl ? env->lookup_radiance(d, 0.0f) : background(d);
             } else {
                 hit ht;
                 ht.found = true, ht.sphere = kind == 1;

@@ -97,20 +97,10 @@ public:
     std::size_t clamped_pixels() const { return clamped_; }
 
     // Trilinear lookup at direction d (world, y up) and sqrt(alpha) in [0, 1].
-    sample lookup(const glm::vec3& d, float sqrt_alpha) const {
-        using k = detail::glsl::kernels<float>;
-        const glm::vec2 uv = k::glint_equirect_uv(d);
-        const float f = std::clamp(sqrt_alpha, 0.0f, 1.0f) * static_cast<float>(chain_.size() - 1);
-        const std::size_t m0 = std::min(static_cast<std::size_t>(f), chain_.size() - 1), m1 = std::min(m0 + 1, chain_.size() - 1);
-        const float t = f - static_cast<float>(m0);
-        float v[16] = {};
-        add_bilinear(chain_[m0], uv, channels(), 1 - t, v);
-        if (t > 0) add_bilinear(chain_[m1], uv, channels(), t, v);
-        sample s;
-        s.radiance = glm::vec3(v[0], v[1], v[2]);
-        for (int k2 = 0; k2 < 8; ++k2) s.indicators.w[k2] = k2 < levels_.count ? v[3 + k2] : 0.0f;
-        return s;
-    }
+    sample lookup(const glm::vec3& d, float sqrt_alpha) const { return lookup_channels(d, sqrt_alpha, channels()); }
+    // The radiance alone (the indicators left 0): what smooth shading and the background need,
+    // without reading the K indicator channels that only the glints use.
+    glm::vec3 lookup_radiance(const glm::vec3& d, float sqrt_alpha) const { return lookup_channels(d, sqrt_alpha, 3).radiance; }
 
     // E_rho(cos theta_o, sqrt alpha) and E_D(cos theta_o, sqrt alpha), bilinear (GL_CLAMP_TO_EDGE)
     // in (sqrt(cos theta_o), sqrt alpha): the square root resolves the steep grazing end.
@@ -125,14 +115,30 @@ public:
 private:
     friend environment build_environment(int width, int height, const std::vector<float>& rgb, const ibl_options& o);
 
-    // out[0..C) += weight x the GL_LINEAR filtered texel of m at uv.
-    static void add_bilinear(const map& m, const glm::vec2& uv, int C, float weight, float* out) {
+    // The first `read` channels of the trilinear lookup (3: the radiance; channels(): all).
+    sample lookup_channels(const glm::vec3& d, float sqrt_alpha, int read) const {
+        using k = detail::glsl::kernels<float>;
+        const glm::vec2 uv = k::glint_equirect_uv(d);
+        const float f = std::clamp(sqrt_alpha, 0.0f, 1.0f) * static_cast<float>(chain_.size() - 1);
+        const std::size_t m0 = std::min(static_cast<std::size_t>(f), chain_.size() - 1), m1 = std::min(m0 + 1, chain_.size() - 1);
+        const float t = f - static_cast<float>(m0);
+        float v[16] = {};
+        add_bilinear(chain_[m0], uv, channels(), read, 1 - t, v);
+        if (t > 0) add_bilinear(chain_[m1], uv, channels(), read, t, v);
+        sample s;
+        s.radiance = glm::vec3(v[0], v[1], v[2]);
+        for (int k2 = 0; k2 < 8; ++k2) s.indicators.w[k2] = k2 < levels_.count ? v[3 + k2] : 0.0f;
+        return s;
+    }
+
+    // out[0..read) += weight x the GL_LINEAR filtered texel of m (C channels a texel) at uv.
+    static void add_bilinear(const map& m, const glm::vec2& uv, int C, int read, float weight, float* out) {
         const auto taps = detail::glsl::kernels<float>::glint_bilinear(uv, m.width, m.height);
         for (int i = 0; i < 4; ++i) {
             const float w = weight * taps.weight[i];
             const float* px = &m.data[(static_cast<std::size_t>(taps.texel[i].y) * static_cast<std::size_t>(m.width) + static_cast<std::size_t>(taps.texel[i].x)) *
                                       static_cast<std::size_t>(C)];
-            for (int c = 0; c < C; ++c) out[c] += w * px[c];
+            for (int c = 0; c < read; ++c) out[c] += w * px[c];
         }
     }
 
@@ -286,7 +292,7 @@ inline environment build_environment(int width, int height, const std::vector<fl
         for (int c = 0; c < C; ++c) out[c] = 0;
         for (int side = 0; side < 2; ++side) {
             const float wl = side == 0 ? 1 - t : t;
-            if (wl > 0) environment::add_bilinear(pyramid[side == 0 ? l0 : l1], uv, C, wl, out);
+            if (wl > 0) environment::add_bilinear(pyramid[side == 0 ? l0 : l1], uv, C, C, wl, out);
         }
     };
     // The roughness chain.

@@ -32,7 +32,6 @@ vec3 to_local(vec3 t, vec3 b, vec3 n, vec3 w) { return vec3(dot(w, t), dot(w, b)
 
 vec3 shade(bool sphere, vec3 p, vec3 n, vec3 t, vec3 b, vec2 uv, vec3 wo_world, vec2 duvdx, vec2 duvdy) {
     vec2 alpha = vec2(u_roughness);
-    float dh = glint_total_area(u_ggx, alpha);
     vec3 wo = to_local(t, b, n, wo_world);
     if (!(wo.z > 0.0)) return vec3(0.0);
     vec3 ambient = vec3(0.0);
@@ -73,6 +72,7 @@ vec3 shade(bool sphere, vec3 p, vec3 n, vec3 t, vec3 b, vec2 uv, vec3 wo_world, 
                                   : g2 * radiance * dot(hv, wi_c) * d_omega / wo.z;
     if (!(specular > 0.0)) return result;
     if (u_glints != 0) {
+        float dh = glint_total_area(u_ggx, alpha);  // only the glints need D_H (lights_scene.hpp)
         glint_grid_params g = u_grid;
         g.seed = u_grid.seed + (sphere ? 1u : 2u);
         glint_grid_light light;

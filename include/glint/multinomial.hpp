@@ -9,7 +9,7 @@
 // The remainder 1 - sum p is the rest bin. For N > 2 the counts and the rest sum to N (up to
 // rounding); for N < 2 the root dithers as the chosen variant does (KK25 Fig. 4). With the
 // mean-preserving variant, whole N up to 63 (N sum p >= 1) give the exact multinomial law:
-// nodes of 4 to 63 trials are drawn trial by trial, bit-sliced, and for N from 4 to 31 the
+// nodes of 4 to 63 trials are drawn trial by trial, bit-sliced, and for N from 4 to 63 the
 // whole draw is one such pass over every bin (kernels/multinomial.glsl).
 #pragma once
 

@@ -218,6 +218,61 @@ share_scan scan_level_shares(int variant, int pow_method) {
 
 }  // namespace
 
+TEST_CASE("ibl: C++'s level shares, drawn four lane groups at a time, equal the vertex-by-vertex draws of the GLSL loop") {
+    // The reference is ibl.glsl's loop as GLSL runs it: per vertex the root's words, the skip
+    // test, glint_multinomial_draw (one bit-sliced pass for N from 4 to 63, the tree elsewhere).
+    long pixels = 0, differ = 0, vertices_in_pass = 0, vertices_two_groups = 0, vertices_other = 0;
+    std::uint32_t salt = 0;
+    for (const char* name : {"city", "studio"})
+        for (int levels : {4, 8})
+            for (float logd : {1.0f, 3.0f, 4.0f, 4.5f, 5.0f}) {
+                const auto& env = environment_of(name, levels);
+                const auto s = env.lookup(direction(++salt, 3), 0.5f);
+                const auto all = K::glint_ibl_probabilities(env.levels(), s.indicators, env.visible_area(0.8f, 0.5f), env.total_area(0.25f));
+                const auto lit = K::glint_ibl_lit_levels(all, levels);
+                glint::grid_params<float> defaults;  // the mean-preserving sampler with its log1p method
+                defaults.log_density = logd, defaults.smooth_tolerance = 0, defaults.seed = salt;
+                const auto g = glint::detail::to_kernel(defaults);
+                for (std::uint32_t i = 0; i < 300; ++i) {
+                    const glm::uvec3 h = glint::pcg3d(glm::uvec3(i, salt, 11u));
+                    const glm::vec2 uv(glint::unit_from_bits<float>(h.x) * 300.0f, glint::unit_from_bits<float>(h.y) * 300.0f);
+                    const float size = 0.5f + 1.5f * glint::unit_from_bits<float>(h.z);
+                    auto px = K::glint_grid_pixel_setup(uv, glm::vec2(size, 0.2f * size), glm::vec2(-0.1f * size, size), g);
+                    const auto batched = K::glint_ibl_level_shares(px, g, levels, lit);
+                    // The GLSL loop, on the same vertices.
+                    const auto tree = K::glint_multinomial_make_tree(lit, levels - 1);
+                    auto cache = K::glint_binomial_empty_cache();
+                    float lit_total = 0;
+                    for (int k = 0; k < 8; ++k) lit_total += lit.p[k];
+                    float share[8] = {};
+                    int draws = 0;
+                    for (int v = 0; v < px.v.count; ++v) {
+                        const float n = px.N * px.v.share[v];
+                        const glm::uvec3 root = K::glint_multinomial_node_words(px.v.hash[v], 0);
+                        if (K::glint_multinomial_exact_all_applies(n, tree.total, g.variant))
+                            ++(n >= 32 ? vertices_two_groups : vertices_in_pass);
+                        else
+                            ++vertices_other;
+                        if (K::glint_surely_no_success(g, n, std::min(lit_total, 1.0f), K::glint_open_unit_from_bits(root.x))) continue;
+                        const auto c = K::glint_multinomial_draw(n, tree, px.v.hash[v], root, g.variant, g.pow_method, cache);
+                        for (int k = 0; k < 7; ++k) share[k + 1] += px.v.weight[v] * c.count[k] / px.N;
+                        draws += levels - 1;
+                    }
+                    bool same = batched.draws == draws;
+                    for (int k = 0; k < 8; ++k) same = same && batched.share[k] == share[k];
+                    differ += !same;
+                    ++pixels;
+                }
+            }
+    MESSAGE(pixels << " pixels (vertices: " << vertices_in_pass << " one group, " << vertices_two_groups << " two groups, " << vertices_other
+                   << " by the tree or the sampler), " << differ << " differ");
+    CHECK(pixels == 2 * 2 * 5 * 300);
+    CHECK(vertices_in_pass >= 1000);
+    CHECK(vertices_two_groups >= 1000);
+    CHECK(vertices_other >= 1000);
+    CHECK(differ == 0);
+}
+
 TEST_CASE("ibl: on each real map, every level's expected share of reflecting microfacets is its probability p_k (K = 4 and 8)") {
     const share_scan o = scan_level_shares(4, 2);  // mean-preserving, log1p
     MESSAGE(o.tested << " level shares tested (" << o.untested << " too rare, carrying " << 100 * (1 - o.covered / o.total)

@@ -202,9 +202,10 @@ TEST_CASE("the exact split draws each trial from its own 32 digits, as a lane-by
 namespace {
 
 // glint_multinomial_exact_all lane by lane: trial i's uniform X_i as a 32-bit integer (digit k is
-// bit i of word k of the root's sequence: words.x, steps of words.y | 1), placed in the first bin
-// k with X_i < c_k, c_k = sum over m <= k of floor(p_m 2^32) in 64 bits (so c_k >= 2^32 holds every
-// trial), else in the rest; the trial in lane floor(N) weighs frac(N).
+// bit i mod 32 of word k of its lane group's sequence: lanes 0..31 from words.x, 32..63 from
+// words.z, steps of words.y | 1), placed in the first bin k with X_i < c_k, c_k = sum over m <= k
+// of floor(p_m 2^32) in 64 bits (so c_k >= 2^32 holds every trial), else in the rest; the trial in
+// lane floor(N) weighs frac(N).
 template <std::size_t K>
 std::array<double, K + 1> exact_all_by_lanes(double N, const std::array<double, K>& p, glm::uvec3 words) {
     std::array<double, K + 1> counts{};  // counts[K] is the rest
@@ -214,7 +215,7 @@ std::array<double, K + 1> exact_all_by_lanes(double N, const std::array<double, 
     std::uint64_t sum = 0;
     for (std::size_t k = 0; k < K; ++k) c[k] = sum += static_cast<std::uint64_t>(std::ldexp(p[k], 32));
     for (int lane = 0; lane <= whole; ++lane) {
-        const std::uint64_t x = lane_uniform(words.x, words.y | 1u, lane);
+        const std::uint64_t x = lane_uniform(lane < 32 ? words.x : words.z, words.y | 1u, lane % 32);
         std::size_t bin = 0;
         while (bin < K && !(x < c[bin])) ++bin;
         counts[bin] += (lane < whole) ? 1.0 : frac;
@@ -224,7 +225,7 @@ std::array<double, K + 1> exact_all_by_lanes(double N, const std::array<double, 
 
 template <std::size_t K>
 void check_exact_all(long& checked, long& differ, double& first_bin, double& first_expected) {
-    for (double N : {4.0, 5.5, 6.0, 13.0, 19.25, 30.0, 31.0})
+    for (double N : {4.0, 5.5, 6.0, 13.0, 19.25, 30.0, 31.0, 31.5, 32.0, 40.75, 63.0})
         for (std::uint32_t trial = 0; trial < 200; ++trial) {
             const glm::uvec3 h = glint::pcg3d(glm::uvec3(trial, static_cast<std::uint32_t>(K), static_cast<std::uint32_t>(N * 4)));
             std::array<double, K> p;
@@ -260,8 +261,54 @@ TEST_CASE("the one-pass draw puts each trial in the bin its 32 digits fall in, a
     check_exact_all<3>(checked, differ, first_bin, first_expected);
     check_exact_all<7>(checked, differ, first_bin, first_expected);
     check_exact_all<8>(checked, differ, first_bin, first_expected);
-    MESSAGE(checked << " draws (N from 4 to 31, K = 2, 3, 7, 8), " << differ << " differ from the lane-by-lane draw");
-    CHECK(checked >= 4000);
+    MESSAGE(checked << " draws (N from 4 to 63, K = 2, 3, 7, 8), " << differ << " differ from the lane-by-lane draw");
+    CHECK(checked >= 6000);
     CHECK(differ == 0);
     CHECK(first_bin == doctest::Approx(first_expected).epsilon(0.05));  // the draws are not all in one bin
+}
+
+TEST_CASE("C++'s four lane groups at once give each group the bins of its own one-group pass") {
+    using MF = glint::detail::glsl::kernels<float>;
+    long groups = 0, differ = 0, batches = 0;
+    for (int K : {2, 3, 4, 5, 8})
+        for (std::uint32_t trial = 0; trial < 400; ++trial) {
+            MF::glint_multinomial_probabilities pr;
+            for (int k = 0; k < 8; ++k) {
+                const float u = glint::unit_from_bits<float>(glint::pcg3d(glm::uvec3(trial, static_cast<std::uint32_t>(K), static_cast<std::uint32_t>(k))).x);
+                pr.p[k] = (u < 0.1f) ? 0.0f : (trial % 5 == 0) ? u : u / static_cast<float>(K);  // every 5th set sums past 1
+            }
+            const auto t = MF::glint_multinomial_make_tree(pr, K);
+            const auto c = MF::glint_multinomial_exact_all_thresholds(t);
+            // Four groups of different sizes (1 to 32 lanes, some empty) and words.
+            std::uint32_t lanes[4], frac[4], state[4], step[4];
+            for (int v = 0; v < 4; ++v) {
+                const glm::uvec3 h = glint::pcg3d(glm::uvec3(trial, static_cast<std::uint32_t>(v), 0x4242u));
+                const int size = static_cast<int>(h.z % 34);  // 33: empty
+                lanes[v] = size >= 33 ? 0u : size == 32 ? 0xffffffffu : (2u << size) - 1u;
+                frac[v] = (size < 32 && h.z % 3 == 0) ? 1u << size : 0u;
+                state[v] = h.x, step[v] = h.y | 1u;
+            }
+            MF::glint_multinomial_group_bins bins[4];
+            MF::glint_multinomial_exact_all_groups_x4(c, t.K, lanes, frac, state, step, bins);
+            ++batches;
+            for (int v = 0; v < 4; ++v) {
+                const auto one = MF::glint_multinomial_exact_all_group(c, t.K, lanes[v], state[v], step[v]);
+                // The bins of the one-group pass, as glint_multinomial_exact_all_counts reads them.
+                std::uint32_t previous = 0;
+                int frac_bin = 8;
+                bool same = true;
+                for (int k = 0; k < 8; ++k) {
+                    const std::uint32_t in_bin = k < t.K ? one.mask[k] & ~previous : 0u;
+                    previous = k < t.K ? one.mask[k] : previous;
+                    same = same && bins[v].count[k] == MF::glint_bit_count(in_bin & ~frac[v]);
+                    if (in_bin & frac[v]) frac_bin = k;
+                }
+                same = same && bins[v].frac_bin == frac_bin;
+                differ += !same;
+                ++groups;
+            }
+        }
+    MESSAGE(batches << " four-group passes, " << groups << " groups, " << differ << " differ from their one-group pass");
+    CHECK(groups == 5 * 400 * 4);
+    CHECK(differ == 0);
 }

@@ -28,15 +28,19 @@
 // slower than the sampler's (288 against 250 ms at K = 4, three alternating runs); 4 to 63, as
 // here: 260 to 277 against 241 to 251 ms, 452 to 472 against 424 to 436 at K = 8.
 //
-// Where the root is exact and N is at most 31, the whole draw is one bit-sliced pass instead of
+// Where the root is exact and N is at most 63, the whole draw is one bit-sliced pass instead of
 // the tree (glint_multinomial_exact_all: each trial's digits against the K cumulative
-// probabilities at once, one loop for the root and every node): the same law, other draws. Against
-// the tree of exact splits it took the IBL estimates from 50.5M to 49.5M instructions at K = 4 and
-// from 91.1M to 84.6M at K = 8 (glint_frame_loop ibl K 1 under callgrind), glint_report's IBL
-// glint frames (linear knob) from 10.7 and 12.5 ms to 9.1 and 9.7 ms at K = 8 (K = 4 within the
-// noise: 6.5 and 7.2 ms before, 8.2 and 6.6 after; alternating runs), and examples/gl/glint_gl's
-// IBL frames on llvmpipe (192 x 120) from 246 to 234 ms (K = 4) and from 437 to 391 ms (K = 8),
-// two alternating runs each.
+// probabilities at once, one loop for the root and every node, per lane group of 32 trials): the
+// same law, other draws. For N up to 31 against the tree of exact splits it took the IBL estimates
+// from 50.5M to 49.5M instructions at K = 4 and from 91.1M to 84.6M at K = 8 (glint_frame_loop
+// ibl K 1 under callgrind), glint_report's IBL glint frames (linear knob) from 10.7 and 12.5 ms to
+// 9.1 and 9.7 ms at K = 8, and examples/gl/glint_gl's IBL frames on llvmpipe (192 x 120) from 246
+// to 234 ms (K = 4) and from 437 to 391 ms (K = 8), two alternating runs each. Up to 63, with C++
+// drawing four lane groups at once (glint_multinomial_exact_all_many, which the IBL grid uses):
+// 49.5M to 43.1M at K = 4, 84.6M to 61.8M at K = 8; glint_report's IBL glint frames (linear
+// knob, two rounds alternating with the code before) 5715 and 6032 us to 4878 and 4688 at K = 4,
+// 9424 and 9295 to 6608 and 5882 at K = 8; llvmpipe's (GLSL, one lane group at a time, four
+// alternating rounds) 236 to 238 ms to 229 to 232 at K = 4, 390 to 393 to 366 at K = 8.
 
 struct glint_multinomial_probabilities {
     real p[8];
@@ -230,46 +234,69 @@ GLINT_FN void glint_multinomial_split_nodes(real positive, glint_multinomial_tre
     }
 }
 
-// The whole draw in one bit-sliced pass, where the root is exact and N is at most 31 (one lane
-// group): every trial's uniform X_i is compared, digit by digit as in
-// glint_multinomial_exact_split, with the K cumulative probabilities c_k = p_0 + ... + p_k (each
-// p_k rounded down to a multiple of 2^-32, summed exactly in 32-bit words); trial i lands in bin
-// k where c_(k-1) <= X_i < c_k, and in the rest where X_i >= c_(K-1). One word sequence decides
-// all K comparisons, so the K - 1 splits of the tree and the root cost one loop of about
-// log2(lanes K) + 1.3 words instead of one such loop per node. The law is the multinomial's, as the
-// tree's exact splits give it: the fractional trial (weight frac(N), lane floor(N)) lands in bin k
-// with probability p_k. Zeroes the counts and sets every count and the rest.
-GLINT_CONST(real) GLINT_MULTINOMIAL_EXACT_ALL_MAX = real(31);
+// The whole draw in one bit-sliced pass, where the root is exact and N is at most 63: every
+// trial's uniform X_i is compared, digit by digit as in glint_multinomial_exact_split, with the K
+// cumulative probabilities c_k = p_0 + ... + p_k (each p_k rounded down to a multiple of 2^-32,
+// summed exactly in 32-bit words); trial i lands in bin k where c_(k-1) <= X_i < c_k, and in the
+// rest where X_i >= c_(K-1). One word sequence decides all K comparisons, so the K - 1 splits of
+// the tree and the root cost one loop of about log2(lanes K) + 1.3 words instead of one such loop
+// per node. Trials 0..31 are lane group a (words from words.x), 32..63 group b (from words.z),
+// each its own Weyl sequence with the step words.y | 1, as in glint_multinomial_exact_split. The
+// law is the multinomial's, as the tree's exact splits give it: the fractional trial (weight
+// frac(N), lane floor(N)) lands in bin k with probability p_k.
+GLINT_CONST(real) GLINT_MULTINOMIAL_EXACT_ALL_MAX = real(63);
 
-GLINT_FN void glint_multinomial_exact_all(real N, glint_multinomial_tree t, uvec3 words, GLINT_INOUT(glint_multinomial_counts) result) {
-    int whole = int(min(N, GLINT_MULTINOMIAL_EXACT_ALL_MAX));  // floor for 0 < N <= 31, the range it is for
-    real frac = N - real(whole);
-    uint lanes = (2u << uint(whole)) - 1u;  // the whole trials and the fractional one, bit `whole`
-    uint frac_lane = 1u << uint(whole);
-    uint threshold[8];
-    uint open[8];
-    uint below[8];
+// The thresholds c_k 2^32 (c_k = p_0 + ... + p_k), and per bin whether c_k reached 1 (every trial
+// is below it).
+struct glint_multinomial_thresholds {
+    uint c[8];
+    bool full[8];
+};
+
+// Per bin k, the trials (bits) of one lane group found below c_k.
+struct glint_multinomial_below {
+    uint mask[8];
+};
+
+GLINT_FN glint_multinomial_thresholds glint_multinomial_exact_all_thresholds(glint_multinomial_tree t) {
+    glint_multinomial_thresholds o;
     uint sum = 0u;
-    bool full = false;  // c_k >= 1: every trial is below it
+    bool reached = false;
     for (int k = 0; k < 8; ++k) {
         real scaled = (k < t.K) ? t.p[k] * real(4294967296.0) : real(0);  // p_k 2^32, exact in float
         bool whole_word = scaled >= real(4294967296.0);
         uint add = (whole_word || !(scaled >= real(0))) ? 0u : uint(scaled);  // NaN as 0, as the split does
         uint next = sum + add;
-        full = full || whole_word || next < sum;  // the sum passed 2^32
+        reached = reached || whole_word || next < sum;  // the sum passed 2^32
         sum = next;
-        threshold[k] = sum;
-        open[k] = (full || k >= t.K) ? 0u : lanes;
-        below[k] = full ? lanes : 0u;
+        o.c[k] = sum;
+        o.full[k] = reached;
     }
-    uint state = words.x;
-    uint step = words.y | 1u;
+    return o;
+}
+
+// The lanes of groups a and b: the whole trials and the fractional one (bit floor(N) overall).
+GLINT_FN uvec2 glint_multinomial_exact_all_lanes(real N) {
+    int whole = int(min(N, GLINT_MULTINOMIAL_EXACT_ALL_MAX));  // floor for 0 < N <= 63, the range it is for
+    return (whole >= 32) ? uvec2(0xffffffffu, (2u << uint(whole - 32)) - 1u) : uvec2((2u << uint(whole)) - 1u, 0u);
+}
+
+// One lane group's pass: its lanes' masks below each c_k, from the words hash(state + j step).
+GLINT_FN glint_multinomial_below glint_multinomial_exact_all_group(glint_multinomial_thresholds c, int K, uint lanes, uint state, uint step) {
+    uint threshold[8];
+    uint open[8];
+    glint_multinomial_below below;
+    for (int k = 0; k < 8; ++k) {
+        threshold[k] = c.c[k];
+        open[k] = (c.full[k] || k >= K) ? 0u : lanes;
+        below.mask[k] = c.full[k] ? lanes : 0u;
+    }
     // Two copies of the loop, for at most 4 and at most 8 bins, each with a constant trip count
     // over the thresholds, so that the C++ compiler unrolls it and keeps its words in registers.
     // (One loop over 8 thresholds: 55.8M instructions for the IBL estimates at K = 4 instead of
     // 49.5M; the step as a function taking the words by reference: 50.0M and 87.0M at K = 8
     // instead of 84.6M.)
-    if (t.K <= 4) {
+    if (K <= 4) {
         for (int digit = 0; digit < 32; ++digit) {
             if ((open[0] | open[1] | open[2] | open[3]) == 0u) break;
             uint word = glint_hash_u32(state);
@@ -278,7 +305,7 @@ GLINT_FN void glint_multinomial_exact_all(real N, glint_multinomial_tree t, uvec
                 uint c_digit = 0u - (threshold[k] >> 31u);  // all ones where c_k's digit is 1
                 threshold[k] <<= 1u;
                 uint decided = open[k] & (word ^ c_digit);  // the first digit that differs from c_k's
-                below[k] |= decided & c_digit;              // ... is 0 where c_k's is 1: below c_k
+                below.mask[k] |= decided & c_digit;         // ... is 0 where c_k's is 1: below c_k
                 open[k] &= ~decided;
             }
         }
@@ -291,25 +318,168 @@ GLINT_FN void glint_multinomial_exact_all(real N, glint_multinomial_tree t, uvec
                 uint c_digit = 0u - (threshold[k] >> 31u);
                 threshold[k] <<= 1u;
                 uint decided = open[k] & (word ^ c_digit);
-                below[k] |= decided & c_digit;
+                below.mask[k] |= decided & c_digit;
                 open[k] &= ~decided;
             }
         }
     }
-    uint previous = 0u;
+    return below;
+}
+
+// The counts from the two groups' masks. Zeroes the counts and sets every count and the rest.
+GLINT_FN void glint_multinomial_exact_all_counts(real N, glint_multinomial_tree t, glint_multinomial_below a, glint_multinomial_below b,
+                                                 GLINT_INOUT(glint_multinomial_counts) result) {
+    int whole = int(min(N, GLINT_MULTINOMIAL_EXACT_ALL_MAX));
+    real frac = N - real(whole);
+    uint frac_a = (whole < 32) ? 1u << uint(whole) : 0u;  // the fractional trial's lane
+    uint frac_b = (whole >= 32) ? 1u << uint(whole - 32) : 0u;
+    uint previous_a = 0u, previous_b = 0u;
     real kept = real(0);
     for (int k = 0; k < 8; ++k) {
-        uint in_bin = (k < t.K) ? (below[k] & ~previous) : 0u;
-        real count = real(glint_bit_count(in_bin & ~frac_lane)) + (((in_bin & frac_lane) != 0u) ? frac : real(0));
+        uint in_a = (k < t.K) ? (a.mask[k] & ~previous_a) : 0u;
+        uint in_b = (k < t.K) ? (b.mask[k] & ~previous_b) : 0u;
+        real count = real(glint_bit_count(in_a & ~frac_a) + glint_bit_count(in_b & ~frac_b)) +
+                     ((((in_a & frac_a) | (in_b & frac_b)) != 0u) ? frac : real(0));
         result.count[k] = count;
         kept += count;
-        previous = (k < t.K) ? below[k] : previous;
+        previous_a = (k < t.K) ? a.mask[k] : previous_a;
+        previous_b = (k < t.K) ? b.mask[k] : previous_b;
     }
     result.rest = N - kept;
 }
 
-// Where the mean-preserving draw takes glint_multinomial_exact_all: N from 4 to 31 and N total >= 1
-// (the root's exact range, within one lane group).
+GLINT_FN void glint_multinomial_exact_all(real N, glint_multinomial_tree t, uvec3 words, GLINT_INOUT(glint_multinomial_counts) result) {
+    glint_multinomial_thresholds c = glint_multinomial_exact_all_thresholds(t);
+    uvec2 lanes = glint_multinomial_exact_all_lanes(N);
+    glint_multinomial_below a = glint_multinomial_exact_all_group(c, t.K, lanes.x, words.x, words.y | 1u);
+    glint_multinomial_below b;
+    for (int k = 0; k < 8; ++k) b.mask[k] = 0u;
+    if (lanes.y != 0u) b = glint_multinomial_exact_all_group(c, t.K, lanes.y, words.z, words.y | 1u);
+    glint_multinomial_exact_all_counts(N, t, a, b, result);
+}
+
+#if !defined(GLINT_GLSL)
+// C++ only: glint_multinomial_exact_all_group for four lane groups with one set of thresholds at
+// once (the IBL's grid vertices of a pixel share their probabilities), their words side by side,
+// so that the hashes, comparisons and bit counts run in vector registers (SSE2 on x86-64; GCC's
+// and Clang's vector extension). Per group and bin: the number of its trials in the bin other
+// than the fractional one (lane mask `frac`, 0 where the group has none), and the bin that trial
+// fell in (8: the rest). Each group's bins are those of glint_multinomial_exact_all_group: the
+// steps that the other groups still need leave a group whose lanes are all decided unchanged
+// (tests/unit/test_multinomial.cpp compares them). GPUs run one fragment a thread: GLSL keeps the
+// single group.
+struct glint_multinomial_group_bins {
+    int count[8];
+    int frac_bin;
+};
+
+GLINT_FN_OUT_OF_LINE void glint_multinomial_exact_all_groups_x4(const glint_multinomial_thresholds& c, int K, const uint lanes_in[4],
+                                                                const uint frac_in[4], const uint state_in[4], const uint step_in[4],
+                                                                glint_multinomial_group_bins bins[4]) {
+    typedef uint u32x4 __attribute__((vector_size(16)));
+    typedef int i32x4 __attribute__((vector_size(16)));
+    typedef unsigned long long u64x2 __attribute__((vector_size(16)));
+    u32x4 lanes, frac, state, step;
+    for (int v = 0; v < 4; ++v) {
+        lanes[v] = lanes_in[v];
+        frac[v] = frac_in[v];
+        state[v] = state_in[v];
+        step[v] = step_in[v];
+    }
+    const u32x4 none = {0u, 0u, 0u, 0u};
+    u32x4 threshold[8];
+    u32x4 open[8];
+    u32x4 below[8];
+    for (int k = 0; k < 8; ++k) {
+        threshold[k] = none + c.c[k];
+        open[k] = (c.full[k] || k >= K) ? none : lanes;
+        below[k] = c.full[k] ? lanes : none;
+    }
+    const int thresholds = (K <= 4) ? 4 : 8;
+    for (int digit = 0; digit < 32; ++digit) {
+        u32x4 any = open[0] | open[1] | open[2] | open[3];
+        if (thresholds == 8) any |= open[4] | open[5] | open[6] | open[7];
+        u64x2 halves = reinterpret_cast<u64x2>(any);
+        if ((halves[0] | halves[1]) == 0u) break;
+        u32x4 word = state;  // glint_hash_u32, four at once
+        word ^= word >> 16u;
+        word *= 0x7feb352du;
+        word ^= word >> 15u;
+        word *= 0x846ca68bu;
+        word ^= word >> 16u;
+        state += step;
+        for (int k = 0; k < thresholds; ++k) {
+            u32x4 c_digit = none - (threshold[k] >> 31u);  // all ones where c_k's digit is 1
+            threshold[k] <<= 1u;
+            u32x4 decided = open[k] & (word ^ c_digit);
+            below[k] |= decided & c_digit;
+            open[k] &= ~decided;
+        }
+    }
+    u32x4 previous = none;
+    const i32x4 bin_of = {0, 0, 0, 0};
+    i32x4 frac_bin = bin_of + 8;
+    for (int k = 0; k < 8; ++k) {
+        u32x4 in_bin = (k < K) ? (below[k] & ~previous) : none;
+        previous = (k < K) ? below[k] : previous;
+        u32x4 x = in_bin & ~frac;  // glint_bit_count, four at once
+        x = x - ((x >> 1u) & 0x55555555u);
+        x = (x & 0x33333333u) + ((x >> 2u) & 0x33333333u);
+        x = (x + (x >> 4u)) & 0x0f0f0f0fu;
+        x = (x * 0x01010101u) >> 24u;
+        frac_bin = ((in_bin & frac) != 0u) ? (bin_of + k) : frac_bin;
+        for (int v = 0; v < 4; ++v) bins[v].count[k] = int(x[v]);
+    }
+    for (int v = 0; v < 4; ++v) bins[v].frac_bin = frac_bin[v];
+}
+
+// glint_multinomial_exact_all for the draws i < count with draw[i] set (each with N[i] from 4 to
+// 63 and root words words[i]; N total >= 1), all with tree t: their lane groups, one or two a
+// draw, four at a time. result[i] is set where draw[i] is, to glint_multinomial_exact_all's counts
+// (the same integer sums and the same float operations).
+GLINT_FN void glint_multinomial_exact_all_many(const glint_multinomial_tree& t, int count, const real N[12], const uvec3 words[12],
+                                               const bool draw[12], glint_multinomial_counts result[12]) {
+    glint_multinomial_thresholds c = glint_multinomial_exact_all_thresholds(t);
+    uint lanes[24], frac[24], state[24], step[24];
+    int groups = 0;
+    for (int i = 0; i < count; ++i) {
+        if (!draw[i]) continue;
+        int whole = int(min(N[i], GLINT_MULTINOMIAL_EXACT_ALL_MAX));
+        uvec2 group_lanes = glint_multinomial_exact_all_lanes(N[i]);
+        lanes[groups] = group_lanes.x, frac[groups] = (whole < 32) ? 1u << uint(whole) : 0u;
+        state[groups] = words[i].x, step[groups] = words[i].y | 1u;
+        ++groups;
+        if (group_lanes.y == 0u) continue;
+        lanes[groups] = group_lanes.y, frac[groups] = 1u << uint(whole - 32);
+        state[groups] = words[i].z, step[groups] = words[i].y | 1u;
+        ++groups;
+    }
+    for (int j = groups; j < ((groups + 3) / 4) * 4; ++j) lanes[j] = 0u, frac[j] = 0u, state[j] = 0u, step[j] = 1u;
+    glint_multinomial_group_bins bins[24];
+    for (int j = 0; j < groups; j += 4) glint_multinomial_exact_all_groups_x4(c, t.K, lanes + j, frac + j, state + j, step + j, bins + j);
+    glint_multinomial_group_bins empty;
+    for (int k = 0; k < 8; ++k) empty.count[k] = 0;
+    empty.frac_bin = 8;
+    int group = 0;
+    for (int i = 0; i < count; ++i) {
+        if (!draw[i]) continue;
+        const glint_multinomial_group_bins& a = bins[group++];
+        const glint_multinomial_group_bins& b = (N[i] >= real(32)) ? bins[group++] : empty;
+        real frac_weight = N[i] - real(int(min(N[i], GLINT_MULTINOMIAL_EXACT_ALL_MAX)));
+        real kept = real(0);  // bins k >= t.K hold nothing: adding their zeros changes no sum
+        for (int k = 0; k < 8; ++k) result[i].count[k] = real(0);
+        for (int k = 0; k < t.K; ++k) {
+            real count_k = real(a.count[k] + b.count[k]) + ((a.frac_bin == k || b.frac_bin == k) ? frac_weight : real(0));
+            result[i].count[k] = count_k;
+            kept += count_k;
+        }
+        result[i].rest = N[i] - kept;
+    }
+}
+#endif
+
+// Where the mean-preserving draw takes glint_multinomial_exact_all: N from 4 to 63 and N total >= 1
+// (the root's exact range).
 GLINT_FN bool glint_multinomial_exact_all_applies(real N, real total, int variant) {
     return variant == GLINT_BINOMIAL_UNBIASED && N >= GLINT_MULTINOMIAL_EXACT_SPLIT_MIN && N <= GLINT_MULTINOMIAL_EXACT_ALL_MAX &&
            N * total >= real(1);

@@ -8,6 +8,7 @@
 //   float e_rho = env.albedo(cos_o, std::sqrt(alpha)), e_d = env.visible_area(cos_o, std::sqrt(alpha));
 //   auto e = glint::ibl_sample(uv, duvdx, duvdy, grid, env.levels(), s.indicators, e_d, env.total_area(alpha));
 //   radiance = F * e_rho * s.radiance * glint::modulation(e);   // mean: the smooth split-sum IBL
+//   // smooth shading needs the radiance alone: F * e_rho * env.lookup_radiance(r, std::sqrt(alpha))
 //
 // The environment (host side, may allocate and throw glint::error):
 // - radiance levels (KK25 Eq. 18) from the luminance, clipped below at the black level l, and the

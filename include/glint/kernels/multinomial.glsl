@@ -16,7 +16,8 @@
 //
 // The mean-preserving variant draws every node of 4 to 63 trials exactly
 // (glint_multinomial_exact_split: floor(n) trials and one of weight frac(n), each left with
-// probability q), and the root too where N is from 4 to 63 and N total >= 1; below 4 trials its
+// probability q), and where N is from 4 to 63 and N total >= 1 the whole draw at once
+// (glint_multinomial_exact_all, below; the root's exact split before it); below 4 trials its
 // sampler is exact for whole N already (the two-point law) and cheaper. So for a whole N up to
 // 63 the counts follow the multinomial law itself, not a chain of Gaussians. Larger nodes, and
 // sparse roots, use the mean-preserving sampler. Against the sampler at every node this
@@ -485,23 +486,18 @@ GLINT_FN bool glint_multinomial_exact_all_applies(real N, real total, int varian
            N * total >= real(1);
 }
 
-// The root of a draw: N trials drawn between the K bins (probability `total`) and the rest, from
-// the root's words (glint_multinomial_node_words(seed, 0)). Zeroes the counts, sets result.rest,
-// and returns the bins' trials for glint_multinomial_split_nodes. The mean-preserving hierarchy
-// draws the root exactly (glint_multinomial_exact_split) where N is from 4 to 63 and N total >= 1;
-// elsewhere with the sampler, from the words' uniforms (u1 from the first). Where N total >= 1 the
-// sampler's skip test (glint_surely_no_success on u1, grid.glsl) never fires, so a caller that
+// The root of a draw that glint_multinomial_exact_all does not take (N outside 4 to 63, N total
+// below 1, or a published variant): N trials drawn between the K bins (probability `total`) and
+// the rest with the sampler, from the uniforms of the root's words
+// (glint_multinomial_node_words(seed, 0); u1 from the first). Zeroes the counts, sets
+// result.rest, and returns the bins' trials for glint_multinomial_split_nodes. Where N total >= 1
+// the sampler's skip test (glint_surely_no_success on u1, grid.glsl) never fires, so a caller that
 // skips roots by it skips only sampler draws that surely keep nothing. (Below N = 4 the sampler
 // is exact for whole N, and for N < 2 dithers to whole counts, KK25 Fig. 4.)
 GLINT_FN real glint_multinomial_root(real N, real total, uvec3 root_words, int variant, int method, GLINT_INOUT(glint_binomial_cache) root_cache,
                                      GLINT_OUT(glint_multinomial_counts) result) {
     for (int k = 0; k < 8; ++k) result.count[k] = real(0);
     N = max(N, real(0));
-    if (variant == GLINT_BINOMIAL_UNBIASED && N >= GLINT_MULTINOMIAL_EXACT_SPLIT_MIN && N <= GLINT_MULTINOMIAL_EXACT_SPLIT_MAX && N * total >= real(1)) {
-        real kept = glint_multinomial_exact_split(N, total, root_words);
-        result.rest = N - kept;
-        return kept;
-    }
     vec2 u = vec2(glint_open_unit_from_bits(root_words.x), glint_open_unit_from_bits(root_words.y));
     glint_binomial root = glint_binomial_variant_cached(variant, N, total, u.x, u.y, method, root_cache);
     result.rest = root.negative;

@@ -282,6 +282,12 @@ GLINT_FN uvec2 glint_multinomial_exact_all_lanes(real N) {
     return (whole >= 32) ? uvec2(0xffffffffu, (2u << uint(whole - 32)) - 1u) : uvec2((2u << uint(whole)) - 1u, 0u);
 }
 
+// The fractional trial's lane, the top one of all (bit floor(N)), as a mask in group a and in
+// group b, from the groups' lanes.
+GLINT_FN uvec2 glint_multinomial_exact_all_frac_lanes(uvec2 lanes) {
+    return uvec2((lanes.y == 0u) ? lanes.x ^ (lanes.x >> 1u) : 0u, lanes.y ^ (lanes.y >> 1u));
+}
+
 // One lane group's pass: its lanes' masks below each c_k, from the words hash(state + j step).
 GLINT_FN glint_multinomial_below glint_multinomial_exact_all_group(glint_multinomial_thresholds c, int K, uint lanes, uint state, uint step) {
     uint threshold[8];
@@ -330,10 +336,9 @@ GLINT_FN glint_multinomial_below glint_multinomial_exact_all_group(glint_multino
 // The counts from the two groups' masks. Zeroes the counts and sets every count and the rest.
 GLINT_FN void glint_multinomial_exact_all_counts(real N, glint_multinomial_tree t, glint_multinomial_below a, glint_multinomial_below b,
                                                  GLINT_INOUT(glint_multinomial_counts) result) {
-    int whole = int(min(N, GLINT_MULTINOMIAL_EXACT_ALL_MAX));
-    real frac = N - real(whole);
-    uint frac_a = (whole < 32) ? 1u << uint(whole) : 0u;  // the fractional trial's lane
-    uint frac_b = (whole >= 32) ? 1u << uint(whole - 32) : 0u;
+    real frac = N - real(int(min(N, GLINT_MULTINOMIAL_EXACT_ALL_MAX)));
+    uvec2 frac_lanes = glint_multinomial_exact_all_frac_lanes(glint_multinomial_exact_all_lanes(N));
+    uint frac_a = frac_lanes.x, frac_b = frac_lanes.y;
     uint previous_a = 0u, previous_b = 0u;
     real kept = real(0);
     for (int k = 0; k < 8; ++k) {
@@ -445,13 +450,13 @@ GLINT_FN void glint_multinomial_exact_all_many(const glint_multinomial_tree& t, 
     int groups = 0;
     for (int i = 0; i < count; ++i) {
         if (!draw[i]) continue;
-        int whole = int(min(N[i], GLINT_MULTINOMIAL_EXACT_ALL_MAX));
         uvec2 group_lanes = glint_multinomial_exact_all_lanes(N[i]);
-        lanes[groups] = group_lanes.x, frac[groups] = (whole < 32) ? 1u << uint(whole) : 0u;
+        uvec2 frac_lanes = glint_multinomial_exact_all_frac_lanes(group_lanes);
+        lanes[groups] = group_lanes.x, frac[groups] = frac_lanes.x;
         state[groups] = words[i].x, step[groups] = words[i].y | 1u;
         ++groups;
         if (group_lanes.y == 0u) continue;
-        lanes[groups] = group_lanes.y, frac[groups] = 1u << uint(whole - 32);
+        lanes[groups] = group_lanes.y, frac[groups] = frac_lanes.y;
         state[groups] = words[i].z, step[groups] = words[i].y | 1u;
         ++groups;
     }
@@ -465,7 +470,7 @@ GLINT_FN void glint_multinomial_exact_all_many(const glint_multinomial_tree& t, 
     for (int i = 0; i < count; ++i) {
         if (!draw[i]) continue;
         const glint_multinomial_group_bins& a = bins[group++];
-        const glint_multinomial_group_bins& b = (N[i] >= real(32)) ? bins[group++] : empty;
+        const glint_multinomial_group_bins& b = (N[i] >= real(32)) ? bins[group++] : empty;  // group b: floor(N) >= 32
         real frac_weight = N[i] - real(int(min(N[i], GLINT_MULTINOMIAL_EXACT_ALL_MAX)));
         real kept = real(0);  // bins k >= t.K hold nothing: adding their zeros changes no sum
         for (int k = 0; k < 8; ++k) result[i].count[k] = real(0);

@@ -98,12 +98,12 @@ int main() {
         report("  T", ct, center, half, et);
         report("  L", cl, center, half, el);
     }
-    // The busy middle (glint_binomial_busy_fit): w = sd / m in [1/6, 0.26], where the clamp is 3.85
-    // to 6 sd below the mean. A(w) ~ w t(w) and B(w) ~ 1 / (w psi(T(w))) = sigma / sd for the
-    // fitted T = A / w, so that sigma (T + Z) clamped at 0 keeps the mean m up to B's fit error
-    // alone; no log or exp, as the other pieces need.
-    {
-        const double a = 1.0 / 6, b = 0.26, center = (a + b) / 2, half = (b - a) / 2;
+    // The middle in closed form (glint_binomial_busy_fit): w = sd / m in [1/6, 0.39] and
+    // [0.38, 0.78], where the clamp is 1.3 to 6 sd below the mean. A(w) ~ w t(w) and
+    // B(w) ~ 1 / (w psi(T(w))) = sigma / sd for the fitted T = A / w, so that sigma (T + Z) clamped
+    // at 0 keeps the mean m up to B's fit error alone; no log or exp, as the other pieces need.
+    for (const auto& range : {std::pair<double, double>{1.0 / 6, 0.39}, std::pair<double, double>{0.38, 0.78}}) {
+        const double a = range.first, b = range.second, center = (a + b) / 2, half = (b - a) / 2;
         const auto ca = fit([&](double w) { return w * t_of_y(2 * std::log(w)); }, a, b, 6);
         auto T = [&](double w) { return horner(ca, (w - center) / half) / w; };
         const auto cb = fit([&](double w) { return 1 / (w * psi(T(w))); }, a, b, 6);

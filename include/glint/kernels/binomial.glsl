@@ -925,49 +925,115 @@ GLINT_FN_OUT_OF_LINE vec2 glint_binomial_two_sided_fit(real N, real p_near) {
 // one-sided fit for N >= 32 and N p_near from 2^-7 to 17 made the CPU sampler about 1.6x faster
 // there, but its constant array made the GLSL frames of examples/gl/glint_gl on llvmpipe 2x
 // slower: glint_binomial_band_fit_scaled's polynomials replaced it.)
-GLINT_CONST(real) GLINT_BINOMIAL_BUSY_LAMBDA = real(17);
+GLINT_CONST(real) GLINT_BINOMIAL_BUSY_LAMBDA = real(8.5);
+GLINT_CONST(real) GLINT_BINOMIAL_CLOSED_LAMBDA = real(3);
 GLINT_CONST(real) GLINT_BINOMIAL_BAND_LAMBDA_MIN = real(0.0078125);  // 2^-7
 
 GLINT_FN bool glint_binomial_middle_needs_no_ends(real N, real p_near) {
     return N >= real(4) && (N < GLINT_BINOMIAL_FAR_N_MAX || N * p_near >= GLINT_BINOMIAL_BAND_LAMBDA_MIN);
 }
 
-// From lambda = N p_near = 17 on (then N >= 34) the ends weigh less than exp(-17) = 4.1e-8 against
-// the middle: its target moments are m = lambda - 1 and v = lambda (1 - p_near) up to that, and
-// its mean is 3.85 sd or more above the clamp. (t, sigma) from w = sd / m: where w <= 1/6 (the clamp
-// 6 sd below, cutting less than Phi(-6) = 1e-9 of the mass) t = m / sd and sigma = sd; above,
-// t = A(w) / w and sigma = sd B(w), polynomials fitted on [1/6, 0.26] by
-// bench/fit_clamped_gaussian.cpp (|A error| 6.2e-9, B's relative error, the mean's, 2.2e-10).
-// No transcendental but a sqrt.
+// The middle in closed form (glint_binomial_busy_fit): lambda = N p_near >= 3 with the far bound
+// 5 sd or more above lambda - 1 (glint_binomial_far_bound_clear: from N = 35 on always; below,
+// from N = 11.45 on, for example N = 20 at p_near from 0.15 to 0.40 and N = 30 at 0.1 to 1/2),
+// the one-sided fit from the middle's moments, without the ends' log1p and exp:
+// - the near end's weight eps = (1 - p_near)^N = exp(N log(1 - p_near)), the log by its series up
+//   to p^6 below p_near = 0.1 (relative error below p^6 / 6.3 = 1.6e-7) and by log(1 - p_near)
+//   from there on; the far end's weight p_far^N taken as 0 (at most 2.2e-7 where the far bound
+//   is clear, at N = 11.45, p = 0.262);
+// - then, for y = n - 1 on the middle, m = (lambda - 1 + eps) / (1 - eps) and
+//   v = (v0 - eps (lambda^2 + v0)) / (1 - eps)^2 with v0 = lambda (1 - p_near) (the moments of
+//   glint/binomial.hpp's step 1 with p^N = 0; free of cancellation). From lambda = 17 on eps is
+//   below exp(-17) = 4.1e-8 and is skipped: m = lambda - 1, v = v0.
+// (t, sigma) from w = sd / m: where 6 sd <= m (the clamp 6 sd below, cutting less than
+// Phi(-6) = 1e-9 of the mass) t = m / sd and sigma = sd; above, t = A(w) / w and
+// sigma = sd B(w), polynomials of degree 6 in two pieces, fitted on [1/6, 0.39] and [0.38, 0.78]
+// (w <= 0.756 from lambda = 3 on) by bench/fit_clamped_gaussian.cpp (|A error| 1.1e-6 and
+// 3.7e-7, B's relative error, the mean's, 7.4e-8 and 3.4e-7). Altogether the middle offset's
+// mean within 7.9e-7 and its variance within 6.0e-6 of their targets (glint_binomial_far_bound_clear). It replaced the band's polynomials from lambda = 3 to 17,
+// and the far bound's table where that bound is clear: no log2 and no table read
+// (`glint_frame_loop draw`, callgrind: 604 to 452 instructions a draw with its hashes at N = 30,
+// p = 0.1, 582 to 398 at N = 30, p = 1/2, 507 to 403 at N = 1000, p = 0.01).
 
-// Returns (t, sigma, sigma t): the Gaussian's centre sigma t is m itself where t = m / sd, which
-// spares the sampler both divisions (it reads only the centre and sigma).
-GLINT_FN vec3 glint_binomial_busy_fit(real lambda, real p_near) {
-    real m = lambda - real(1);
-    real sd = sqrt(lambda * (real(1) - p_near));
-    if (real(6) * sd <= m) return vec3(m / sd, sd, m);
-    real w = sd / m;
-    real s = (w - real(0.21333333333333332)) * real(21.428571428571423);
-    real a = real(-1.8128214285233975e-07);
-    a = real(-4.3788862613105279e-06) + s * a;
-    a = real(-1.3507989839163198e-05) + s * a;
-    a = real(-1.899234614685966e-05) + s * a;
-    a = real(-1.520834983237736e-05) + s * a;
-    a = real(-6.9201256167287209e-06) + s * a;
-    a = real(0.99999861049461036) + s * a;
-    real b = real(8.6763553532095392e-08);
-    b = real(3.9317098920837765e-06) + s * b;
-    b = real(1.2598450914117883e-05) + s * b;
-    b = real(1.7936165823427576e-05) + s * b;
-    b = real(1.4453165524159861e-05) + s * b;
-    b = real(6.6059204968274304e-06) + s * b;
-    b = real(1.0000013312348952) + s * b;
-    real t = a / w, sigma = sd * b;
-    return vec3(t, sigma, sigma * t);
+// (sigma, sigma t) from the middle's sd, m and 1 / m (w = sd / m <= 0.78): the sampler reads only
+// sigma and the Gaussian's centre sigma t = sd B(w) A(w) / w = m A(w) B(w), so t itself, a
+// division, is left to the callers that need it.
+GLINT_FN vec2 glint_binomial_busy_fit_moments(real sd, real m, real inv_m) {
+    if (real(6) * sd <= m) return vec2(sd, m);
+    real w = sd * inv_m;
+    real a, b;
+    if (w <= real(0.39)) {
+        real s = (w - real(0.27833333333333332)) * real(8.955223880597014);
+        a = real(0.00011943678449015837);
+        a = real(0.00018302133751199874) + s * a;
+        a = real(-0.00069547161469821195) + s * a;
+        a = real(-0.002035638081040209) + s * a;
+        a = real(-0.0020402758719174677) + s * a;
+        a = real(-0.00092859049255856834) + s * a;
+        a = real(0.99983447436784556) + s * a;
+        b = real(-0.0001010116038187498);
+        b = real(-0.00019222158274883212) + s * b;
+        b = real(0.00054878094329678456) + s * b;
+        b = real(0.0017921698298307932) + s * b;
+        b = real(0.0018572517958501784) + s * b;
+        b = real(0.00085872202306998995) + s * b;
+        b = real(1.0001543519893139) + s * b;
+    } else {
+        real s = (w - real(0.58)) * real(5);
+        a = real(0.00015238612634742497);
+        a = real(-0.00054884133667327585) + s * a;
+        a = real(0.0010223532290255847) + s * a;
+        a = real(0.0013518004634614407) + s * a;
+        a = real(-0.03745569063120377) + s * a;
+        a = real(-0.09043147439997852) + s * a;
+        a = real(0.94211947292798182) + s * a;
+        b = real(-0.00016808807881171867);
+        b = real(0.00044515029568771634) + s * b;
+        b = real(-0.00041189500770965357) + s * b;
+        b = real(-0.0020756671873424634) + s * b;
+        b = real(0.026306288444813662) + s * b;
+        b = real(0.070620399407174198) + s * b;
+        b = real(1.0472905854346981) + s * b;
+    }
+    return vec2(sd * b, m * (a * b));
 }
 
+// (sigma, sigma t) of the middle at (N, p_near), lambda = N p_near >= 3.
+GLINT_FN vec2 glint_binomial_busy_fit(real N, real p_near) {
+    real lambda = N * p_near;
+    real v0 = lambda * (real(1) - p_near);
+    if (lambda >= real(17)) {
+        real m = lambda - real(1);
+        real sd = sqrt(v0);
+        return glint_binomial_busy_fit_moments(sd, m, (real(6) * sd <= m) ? real(0) : real(1) / m);
+    }
+    // log(1 - p_near): its series up to p^6 below p = 0.1 (relative error below p^6 / 6.3 = 1.6e-7;
+    // there 1 - p would round away up to 6e-8 / p of it), log itself from there on (its rounding
+    // of 1 - p: 6e-7 at most).
+    real series = real(1.0 / 5.0) + p_near * real(1.0 / 6.0);
+    series = real(1) + p_near * (real(0.5) + p_near * (real(1.0 / 3.0) + p_near * (real(0.25) + p_near * series)));
+    real eps = exp(N * ((p_near < real(0.1)) ? -p_near * series : log(real(1) - p_near)));
+    // With P(M) = 1 - eps and E[y 1_M] = lambda - 1 + eps: m = E[y 1_M] / P(M), and
+    // sd = sqrt(v0 - eps (lambda^2 + v0)) / P(M), from one division.
+    real mass = real(1) - eps;
+    real excess = (lambda - real(1)) + eps;
+    real r = real(1) / (mass * excess);
+    real root = sqrt(v0 - eps * (lambda * lambda + v0));
+    return glint_binomial_busy_fit_moments(root * (excess * r), excess * (excess * r), mass * (mass * r));
+}
+
+// Whether the far bound N - 2 lies 5 sd or more above lambda - 1, with sd = sqrt(lambda
+// (1 - p_near)), the binomial's own: there the closed form's middle offset, capped at N - 2, keeps
+// its mean within 7.9e-7 and its variance within 6.0e-6 of their targets, the cap and the far end
+// included (on N from 6 to 40 in steps of 0.05 x p_near in steps of 0.001; the unit test in
+// tests/unit/test_binomial_model.cpp checks integer N). From moments that need no exp, so that a
+// draw the table must serve does not pay for the closed form first.
+GLINT_FN bool glint_binomial_far_bound_clear(real N, real m0, real sd0) {
+    return m0 + real(5) * sd0 <= N - real(2);
+}
 // The one-sided fit for N >= 32 and lambda = N p_near from 2^-7 to 17 (where the far bound removes
-// less than 1e-8 of the middle's mean), without the ends: ((sigma t - (lambda - 1)) / sqrt(lambda),
+// less than 1e-8 of the middle's mean; the sampler reads it below lambda = 3, where
+// glint_binomial_busy_fit takes over), without the ends: ((sigma t - (lambda - 1)) / sqrt(lambda),
 // sigma / sqrt(lambda (1 - p_near))) as polynomials in x = log2(lambda) and q = 32 / N, four
 // pieces in x. The digits come from bench/fit_binomial_band.cpp (Chebyshev interpolation of the
 // exact fit, written in powers), which also measures what they leave over the band: the centre
@@ -1092,17 +1158,23 @@ GLINT_FN vec3 glint_binomial_band_fit(real N, real p_near) {
     return vec3(centre / sigma, sigma, centre);
 }
 
-// (t, sigma, sigma t) of the middle where glint_binomial_middle_needs_no_ends: the far bound's table
-// below N = 32, the band's polynomials up to lambda = 17, glint_binomial_busy_fit from there on.
-GLINT_FN vec3 glint_binomial_middle_fit(real N, real p_near) {
+// (t, sigma, sigma t) of the middle where glint_binomial_middle_needs_no_ends: glint_binomial_busy_fit
+// from lambda = 3 on where the far bound is clear, else the far bound's table below N = 32 and the
+// band's polynomials from there on. Out of line in C++: inlined into its callers it changed how GCC
+// inlines the grid's lattice code in the same translation unit, for more instructions (callgrind,
+// glint_frame_loop: point 2 105.4M against 104.9M, ibl 4 1 43.7M against 43.2M).
+GLINT_FN_OUT_OF_LINE vec3 glint_binomial_middle_fit(real N, real p_near) {
     real lambda = N * p_near;
+    if (lambda >= GLINT_BINOMIAL_CLOSED_LAMBDA && glint_binomial_far_bound_clear(N, lambda - real(1), sqrt(lambda * (real(1) - p_near)))) {
+        vec2 f = glint_binomial_busy_fit(N, p_near);
+        return vec3(f.y / f.x, f.x, f.y);
+    }
     if (N < GLINT_BINOMIAL_FAR_N_MAX) {
         vec2 f = glint_binomial_two_sided_fit(N, p_near);
         real sigma = sqrt(lambda) * exp(f.y);
         return vec3(f.x, sigma, sigma * f.x);
     }
-    if (lambda < GLINT_BINOMIAL_BUSY_LAMBDA) return glint_binomial_band_fit(N, p_near);
-    return glint_binomial_busy_fit(lambda, p_near);
+    return glint_binomial_band_fit(N, p_near);
 }
 
 GLINT_FN glint_binomial_middle glint_binomial_unbiased_middle_setup(real N, real p, glint_binomial_ends e) {
@@ -1197,26 +1269,29 @@ GLINT_FN glint_binomial glint_binomial_unbiased_small(real N, real p, real u1) {
     return glint_binomial_pair(g.positive_fixed + g.gaussian, g.negative_fixed + g.gaussian);
 }
 
-// The busy middle, where most draws of large footprints fall: lambda = N p_near >= 17 (so
-// N >= 34), the clamp 6 sd or more below the mean (glint_binomial_busy_fit's first case) and u1 in
-// [1.03e-3, 1 - 1.03e-3]. There glint_binomial_unbiased's test finds the middle sure (both of its
-// glint_binomial_exp_taylor3 factors are at least exp_taylor3(0.999 x 17) = 978.6, and
-// 1.001 / 978.6 = 1.0229e-3, plus 1e-6 at the top), so this is its arithmetic without the setup:
-// the same result (tests/unit/test_binomial_shortcuts.cpp), in about 175 instructions against
-// about 250 (Alg. 1's middle: 170). For N > 2 and N, p clamped; false where it does not apply.
-// glint_binomial_unbiased_cached does not take it: there it cost more than it saved (callgrind,
-// glint_frame_loop: IBL K = 4 estimates 70.0M instructions without it, 71.9M with it; the
-// point-light frame 107.9M and 110.4M), its draws mostly reusing a warm cache.
+// The busy middle, where most draws of large footprints fall: lambda = N p_near >= 8.5 (so
+// N >= 17), the far bound clear (glint_binomial_busy_fit) and u1 in [6.79e-3, 1 - 6.79e-3]. There
+// glint_binomial_unbiased's test finds the middle sure (both of its glint_binomial_exp_taylor3
+// factors are at least exp_taylor3(0.999 x 8.5) = 147.58, and 1.001 / 147.58 = 6.783e-3, plus
+// 1e-6 at the top), so this is its arithmetic without the setup: the same result
+// (tests/unit/test_binomial_shortcuts.cpp), in about 175 instructions against about 250 where the
+// clamp is 6 sd or more below the centre (Alg. 1's middle: 170). For N > 2 and N, p clamped; false
+// where it does not apply. glint_binomial_unbiased_cached does not take it: there it cost more than
+// it saved (callgrind, glint_frame_loop: IBL K = 4 estimates 70.0M instructions without it, 71.9M
+// with it; the point-light frame 107.9M and 110.4M), its draws mostly reusing a warm cache.
 GLINT_FN bool glint_binomial_unbiased_busy(real N, real p, real u1, real u2, int method, GLINT_OUT(glint_binomial) r) {
     real p_near = min(p, real(1) - p);
     real lambda = N * p_near;
-    if (!(method != GLINT_POW_NAIVE && lambda >= GLINT_BINOMIAL_BUSY_LAMBDA && u1 >= real(1.03e-3) && u1 <= real(1) - real(1.03e-3)))
+    if (!(method != GLINT_POW_NAIVE && lambda >= GLINT_BINOMIAL_BUSY_LAMBDA && u1 >= real(6.79e-3) && u1 <= real(1) - real(6.79e-3)))
         return false;
+    // glint_binomial_busy_fit's first case from lambda = 17 on written out: the fit's call cost the
+    // draws at N p = 100 15% more instructions.
     real m = lambda - real(1);
     real sd = sqrt(lambda * (real(1) - p_near));
-    if (!(real(6) * sd <= m)) return false;
+    if (!glint_binomial_far_bound_clear(N, m, sd)) return false;
+    vec2 f = (lambda >= real(17) && real(6) * sd <= m) ? vec2(sd, m) : glint_binomial_busy_fit(N, p_near);
     bool lower = p <= real(0.5);
-    real G = glint_binomial_gaussian_count(lower ? real(1) + m : (N - real(1)) - m, sd, lower, u2, N);
+    real G = glint_binomial_gaussian_count(lower ? real(1) + f.y : (N - real(1)) - f.y, f.x, lower, u2, N);
     r = glint_binomial_pair(G, N - G);
     return true;
 }

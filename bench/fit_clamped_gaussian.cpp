@@ -98,7 +98,7 @@ int main() {
         report("  T", ct, center, half, et);
         report("  L", cl, center, half, el);
     }
-    // The middle in closed form (glint_binomial_busy_fit): w = sd / m in [1/6, 0.39] and
+    // The middle in closed form (glint_binomial_closed_fit): w = sd / m in [1/6, 0.39] and
     // [0.38, 0.78], where the clamp is 1.3 to 6 sd below the mean. A(w) ~ w t(w) and
     // B(w) ~ 1 / (w psi(T(w))) = sigma / sd for the fitted T = A / w, so that sigma (T + Z) clamped
     // at 0 keeps the mean m up to B's fit error alone; no log or exp, as the other pieces need.

@@ -57,16 +57,17 @@
 // 4. Without the ends. The parameters depend on (N, p) alone, so where they are tabulated or in
 //    closed form the sampler does not need P(n = 0) and P(n = N) for them, only for the gates,
 //    and skips those too where u1 is surely between them (glint_binomial_middle_fit):
-//    - lambda = N p_near >= 8.5 where the far bound is 5 sigma or more beyond the Gaussian's
-//      centre (from N = 32 on always; below, for example N = 30 at p from 0.28 to 0.72): the
-//      one-sided fit in closed form (glint_binomial_busy_fit). The far end weighs less than
-//      2e-9 there; the near end's weight eps = (1 - p_near)^N is exp(-N p_near (1 + p_near / 2 +
-//      ... + p_near^5 / 6)) below lambda = 17 and 0 from there on (< 4.1e-8), which gives m and v
-//      in closed form; (t, sigma) come from w = sqrt(v) / m by two degree-6 polynomials
-//      (t = m / sd, sigma = sd where w <= 1/6). The middle offset's mean within 2.2e-7 and its
-//      variance within 2.6e-6 of their targets;
+//    - lambda = N p_near >= 3 where the far bound N - 2 is 5 sd or more above lambda - 1 (from
+//      N = 29 on always; below, from N = 11.45 on, for example N = 20 at p_near from 0.15 to
+//      0.40): the one-sided fit in closed form (glint_binomial_closed_fit). The far end weighs
+//      less than 2.2e-7 there and is dropped; the near end's weight eps = (1 - p_near)^N comes
+//      from log(1 - p_near) (its series below p_near = 0.1) and an exp below lambda = 17, and is
+//      0 from there on (< 4.1e-8), which gives m and v in closed form; (t, sigma) come from
+//      w = sqrt(v) / m by two degree-6 polynomials in two pieces (t = m / sd, sigma = sd where
+//      6 sd <= m). The middle offset's mean within 7.9e-7 and its variance within 6.0e-6 of
+//      their targets;
 //    - elsewhere from N = 4 to 32: the far bound's table, scaled by sqrt(N p_near);
-//    - N >= 32 and lambda from 2^-7 to 8.5 (the band): the one-sided fit of step 2 as a function
+//    - N >= 32 and lambda from 2^-7 to 3 (the band): the one-sided fit of step 2 as a function
 //      of (log2 lambda, 32 / N), polynomials in four pieces (glint_binomial_band_fit; made and
 //      measured by bench/fit_binomial_band.cpp: the offset's mean within 2.7e-6 and its variance
 //      within 1.8e-5 of their targets). They replaced the ends, m, v and the fit's log and exp,
@@ -88,17 +89,17 @@
 // exponent of p_near already shows it (p_near^N < 2^(floor(N) e) <= 2^-128); N <= 2 needs no
 // transcendental at all.
 // Where the mean-preserving sampler surely draws the middle and its parameters need no ends, it
-// skips the gates as well (they would give the middle). From N p_near = 8.5 on, where the far
-// bound is clear and u1 is in [6.79e-3, 1 - 6.79e-3], a bound that implies the sure middle there,
-// it draws the Gaussian at once (glint_binomial_unbiased_busy): Alg. 1's cost for most draws of
-// large footprints. Elsewhere, where the middle is sure and its parameters need no
+// skips the gates as well (they would give the middle). From N p_near = 17 on, where the clamp is
+// 6 sd or more below the mean and u1 is in [1.03e-3, 1 - 1.03e-3], a bound that implies the sure
+// middle there, it draws the Gaussian at once (glint_binomial_unbiased_busy): Alg. 1's cost for
+// most draws of large footprints. Elsewhere, where the middle is sure and its parameters need no
 // ends, the C++ kernel draws it without building the gates and the setup's structs
 // (glint_binomial_unbiased_sure_middle; GLSL keeps the one path, which inlines the table read
 // once). The cached kernel (glint_binomial_unbiased_cached, the grid's) keeps its cache instead.
 // Sparse glints (N p << 1), the common case, then cost two comparisons. Where the middle is
 // drawn, its setup (step 4) costs a table read (N < 32: a log2, two sqrt and 16 node pairs, and
 // an exp), a log2, two sqrt and 21 to 24 polynomial terms per output in the band, or a sqrt and
-// two polynomials from N p = 8.5 on (and an exp below 17); elsewhere the ends (a log1p and an exp), the moments, and the
+// two polynomials from N p = 3 on (and a log below p = 1/10 and an exp below N p = 17); elsewhere the ends (a log1p and an exp), the moments, and the
 // one-sided fit (a log, two polynomials, an exp). The table read is
 // out of line in C++: inlined, it slowed the sampler's other paths. Measured against Alg. 1 and
 // std::binomial_distribution: docs/binomial.md.

@@ -182,9 +182,9 @@ std::pair<double, double> busy_fit_errors(bool without_eps) {
         const auto g = K::glint_binomial_middle_targets(N, p, e);
         const double lambda = N * p;
         glm::dvec3 f = K::glint_binomial_middle_fit(N, p);
-        REQUIRE(glm::all(glm::equal(glm::dvec2(f.y, f.z), K::glint_binomial_busy_fit(N, p))));
+        REQUIRE(glm::all(glm::equal(glm::dvec2(f.y, f.z), K::glint_binomial_closed_fit(N, p))));
         if (without_eps) {
-            const glm::dvec2 h = K::glint_binomial_busy_fit_moments(std::sqrt(lambda * (1 - p)), lambda - 1, 1 / (lambda - 1));
+            const glm::dvec2 h = K::glint_binomial_closed_fit_moments(std::sqrt(lambda * (1 - p)), lambda - 1, 1 / (lambda - 1));
             f = glm::dvec3(h.y / h.x, h.x, h.y);
         }
         const auto m = K::glint_capped_offset_moments(f.x, f.y, N - 2);

@@ -72,7 +72,7 @@ std::vector<real> u1_values(real N, real p, int method) {
     const auto e = K<real>::glint_binomial_unbiased_ends_evaluated(N2, p, method);
     thresholds.insert(thresholds.end(), {e.all_positive, real(1) - e.all_negative});
     // The busy middle's bounds on u1 (glint_binomial_unbiased_busy).
-    thresholds.insert(thresholds.end(), {real(6.79e-3), real(1) - real(6.79e-3)});
+    thresholds.insert(thresholds.end(), {real(1.03e-3), real(1) - real(1.03e-3)});
     std::vector<real> us = {real(1), real(0x1p-24), real(1) - real(0x1p-24), real(0.5)};
     for (real t : thresholds) {
         // u1 is a normal number: the shortcuts take subnormal gate probabilities as 0, which
@@ -92,9 +92,9 @@ void check_identical(const char* precision) {
     std::vector<double> ns = gt::binomial_grid_n(), ps = gt::binomial_grid_p();
     // Also where the middle's closed form begins, N p_near = 3 (N = 12 at p = 1/4, 300 at p = 0.01),
     // and its far bound's test (clear from N = 11.45 on; N = 20 at p from 0.15 to 0.40, N = 30 up to
-    // p = 1/2), where the busy middle begins, N p_near = 8.5 (N = 17 at p = 1/2, 850 at p = 0.01),
-    // N p_near = 17 (where the near end's weight is dropped: N = 34 at p = 1/2, 1700 at p = 0.01)
-    // and 6 sd = N p_near - 1 (N p_near = 38.4 at p_near = 0.01: N = 3840).
+    // p = 1/2), N p_near = 8.5 (N = 17 at p = 1/2, 850 at p = 0.01), where the busy middle begins,
+    // N p_near = 17 (also where the near end's weight is dropped: N = 34 at p = 1/2, 1700 at
+    // p = 0.01), and 6 sd = N p_near - 1 (N p_near = 38.4 at p_near = 0.01: N = 3840).
     for (double extra : {2.5, 4.0, 11.45, 12.0, 17.0, 20.0, 21.0, 28.5, 29.0, 34.0, 50.0, 176.0, 180.0, 220.0, 300.0, 850.0, 1418.0, 1600.0, 1700.0,
                          3840.0, 1e5, 1e18})
         ns.push_back(extra);

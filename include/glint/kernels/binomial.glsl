@@ -925,7 +925,7 @@ GLINT_FN_OUT_OF_LINE vec2 glint_binomial_two_sided_fit(real N, real p_near) {
 // one-sided fit for N >= 32 and N p_near from 2^-7 to 17 made the CPU sampler about 1.6x faster
 // there, but its constant array made the GLSL frames of examples/gl/glint_gl on llvmpipe 2x
 // slower: glint_binomial_band_fit_scaled's polynomials replaced it.)
-GLINT_CONST(real) GLINT_BINOMIAL_BUSY_LAMBDA = real(8.5);
+GLINT_CONST(real) GLINT_BINOMIAL_BUSY_LAMBDA = real(17);
 GLINT_CONST(real) GLINT_BINOMIAL_CLOSED_LAMBDA = real(3);
 GLINT_CONST(real) GLINT_BINOMIAL_BAND_LAMBDA_MIN = real(0.0078125);  // 2^-7
 
@@ -933,14 +933,13 @@ GLINT_FN bool glint_binomial_middle_needs_no_ends(real N, real p_near) {
     return N >= real(4) && (N < GLINT_BINOMIAL_FAR_N_MAX || N * p_near >= GLINT_BINOMIAL_BAND_LAMBDA_MIN);
 }
 
-// The middle in closed form (glint_binomial_busy_fit): lambda = N p_near >= 3 with the far bound
-// 5 sd or more above lambda - 1 (glint_binomial_far_bound_clear: from N = 35 on always; below,
-// from N = 11.45 on, for example N = 20 at p_near from 0.15 to 0.40 and N = 30 at 0.1 to 1/2),
-// the one-sided fit from the middle's moments, without the ends' log1p and exp:
+// The middle in closed form (glint_binomial_closed_fit): lambda = N p_near >= 3 with the far bound
+// 5 sd or more above lambda - 1 (glint_binomial_far_bound_clear: from N = 29 on always; below,
+// from N = 11.45 on, for example N = 20 at p_near from 0.15 to 0.40), the one-sided fit from the middle's moments, without the ends' log1p and exp:
 // - the near end's weight eps = (1 - p_near)^N = exp(N log(1 - p_near)), the log by its series up
 //   to p^6 below p_near = 0.1 (relative error below p^6 / 6.3 = 1.6e-7) and by log(1 - p_near)
-//   from there on; the far end's weight p_far^N taken as 0 (at most 2.2e-7 where the far bound
-//   is clear, at N = 11.45, p = 0.262);
+//   from there on; the far end's weight p_near^N taken as 0 (at most 2.2e-7 where the far bound
+//   is clear, at N = 11.45, p_near = 0.262);
 // - then, for y = n - 1 on the middle, m = (lambda - 1 + eps) / (1 - eps) and
 //   v = (v0 - eps (lambda^2 + v0)) / (1 - eps)^2 with v0 = lambda (1 - p_near) (the moments of
 //   glint/binomial.hpp's step 1 with p^N = 0; free of cancellation). From lambda = 17 on eps is
@@ -950,15 +949,16 @@ GLINT_FN bool glint_binomial_middle_needs_no_ends(real N, real p_near) {
 // sigma = sd B(w), polynomials of degree 6 in two pieces, fitted on [1/6, 0.39] and [0.38, 0.78]
 // (w <= 0.756 from lambda = 3 on) by bench/fit_clamped_gaussian.cpp (|A error| 1.1e-6 and
 // 3.7e-7, B's relative error, the mean's, 7.4e-8 and 3.4e-7). Altogether the middle offset's
-// mean within 7.9e-7 and its variance within 6.0e-6 of their targets (glint_binomial_far_bound_clear). It replaced the band's polynomials from lambda = 3 to 17,
-// and the far bound's table where that bound is clear: no log2 and no table read
-// (`glint_frame_loop draw`, callgrind: 604 to 452 instructions a draw with its hashes at N = 30,
-// p = 0.1, 582 to 398 at N = 30, p = 1/2, 507 to 403 at N = 1000, p = 0.01).
+// mean within 7.9e-7 and its variance within 6.0e-6 of their targets (see
+// glint_binomial_far_bound_clear). It replaced the band's polynomials from lambda = 3 to 17, and
+// the far bound's table where that bound is clear: no log2 and no table read
+// (`glint_frame_loop draw`, callgrind: 604 to 501 instructions a draw with its hashes at N = 30,
+// p = 0.1, 582 to 431 at N = 30, p = 1/2, 507 to 402 at N = 1000, p = 0.01).
 
 // (sigma, sigma t) from the middle's sd, m and 1 / m (w = sd / m <= 0.78): the sampler reads only
 // sigma and the Gaussian's centre sigma t = sd B(w) A(w) / w = m A(w) B(w), so t itself, a
 // division, is left to the callers that need it.
-GLINT_FN vec2 glint_binomial_busy_fit_moments(real sd, real m, real inv_m) {
+GLINT_FN vec2 glint_binomial_closed_fit_moments(real sd, real m, real inv_m) {
     if (real(6) * sd <= m) return vec2(sd, m);
     real w = sd * inv_m;
     real a, b;
@@ -999,13 +999,13 @@ GLINT_FN vec2 glint_binomial_busy_fit_moments(real sd, real m, real inv_m) {
 }
 
 // (sigma, sigma t) of the middle at (N, p_near), lambda = N p_near >= 3.
-GLINT_FN vec2 glint_binomial_busy_fit(real N, real p_near) {
+GLINT_FN vec2 glint_binomial_closed_fit(real N, real p_near) {
     real lambda = N * p_near;
     real v0 = lambda * (real(1) - p_near);
     if (lambda >= real(17)) {
         real m = lambda - real(1);
         real sd = sqrt(v0);
-        return glint_binomial_busy_fit_moments(sd, m, (real(6) * sd <= m) ? real(0) : real(1) / m);
+        return glint_binomial_closed_fit_moments(sd, m, (real(6) * sd <= m) ? real(0) : real(1) / m);
     }
     // log(1 - p_near): its series up to p^6 below p = 0.1 (relative error below p^6 / 6.3 = 1.6e-7;
     // there 1 - p would round away up to 6e-8 / p of it), log itself from there on (its rounding
@@ -1019,7 +1019,7 @@ GLINT_FN vec2 glint_binomial_busy_fit(real N, real p_near) {
     real excess = (lambda - real(1)) + eps;
     real r = real(1) / (mass * excess);
     real root = sqrt(v0 - eps * (lambda * lambda + v0));
-    return glint_binomial_busy_fit_moments(root * (excess * r), excess * (excess * r), mass * (mass * r));
+    return glint_binomial_closed_fit_moments(root * (excess * r), excess * (excess * r), mass * (mass * r));
 }
 
 // Whether the far bound N - 2 lies 5 sd or more above lambda - 1, with sd = sqrt(lambda
@@ -1033,7 +1033,7 @@ GLINT_FN bool glint_binomial_far_bound_clear(real N, real m0, real sd0) {
 }
 // The one-sided fit for N >= 32 and lambda = N p_near from 2^-7 to 17 (where the far bound removes
 // less than 1e-8 of the middle's mean; the sampler reads it below lambda = 3, where
-// glint_binomial_busy_fit takes over), without the ends: ((sigma t - (lambda - 1)) / sqrt(lambda),
+// glint_binomial_closed_fit takes over), without the ends: ((sigma t - (lambda - 1)) / sqrt(lambda),
 // sigma / sqrt(lambda (1 - p_near))) as polynomials in x = log2(lambda) and q = 32 / N, four
 // pieces in x. The digits come from bench/fit_binomial_band.cpp (Chebyshev interpolation of the
 // exact fit, written in powers), which also measures what they leave over the band: the centre
@@ -1158,15 +1158,17 @@ GLINT_FN vec3 glint_binomial_band_fit(real N, real p_near) {
     return vec3(centre / sigma, sigma, centre);
 }
 
-// (t, sigma, sigma t) of the middle where glint_binomial_middle_needs_no_ends: glint_binomial_busy_fit
+// (t, sigma, sigma t) of the middle where glint_binomial_middle_needs_no_ends: glint_binomial_closed_fit
 // from lambda = 3 on where the far bound is clear, else the far bound's table below N = 32 and the
 // band's polynomials from there on. Out of line in C++: inlined into its callers it changed how GCC
 // inlines the grid's lattice code in the same translation unit, for more instructions (callgrind,
 // glint_frame_loop: point 2 105.4M against 104.9M, ibl 4 1 43.7M against 43.2M).
 GLINT_FN_OUT_OF_LINE vec3 glint_binomial_middle_fit(real N, real p_near) {
     real lambda = N * p_near;
-    if (lambda >= GLINT_BINOMIAL_CLOSED_LAMBDA && glint_binomial_far_bound_clear(N, lambda - real(1), sqrt(lambda * (real(1) - p_near)))) {
-        vec2 f = glint_binomial_busy_fit(N, p_near);
+    // N > 11 only spares the sqrt: the far bound is never clear below N = 11.45 from lambda = 3 on.
+    if (lambda >= GLINT_BINOMIAL_CLOSED_LAMBDA && N > real(11) &&
+        glint_binomial_far_bound_clear(N, lambda - real(1), sqrt(lambda * (real(1) - p_near)))) {
+        vec2 f = glint_binomial_closed_fit(N, p_near);
         return vec3(f.y / f.x, f.x, f.y);
     }
     if (N < GLINT_BINOMIAL_FAR_N_MAX) {
@@ -1269,29 +1271,29 @@ GLINT_FN glint_binomial glint_binomial_unbiased_small(real N, real p, real u1) {
     return glint_binomial_pair(g.positive_fixed + g.gaussian, g.negative_fixed + g.gaussian);
 }
 
-// The busy middle, where most draws of large footprints fall: lambda = N p_near >= 8.5 (so
-// N >= 17), the far bound clear (glint_binomial_busy_fit) and u1 in [6.79e-3, 1 - 6.79e-3]. There
+// The busy middle, where most draws of large footprints fall: lambda = N p_near >= 17 (so
+// N >= 34, where the far bound is always clear), the clamp 6 sd or more below the mean
+// (glint_binomial_closed_fit's first case) and u1 in [1.03e-3, 1 - 1.03e-3]. There
 // glint_binomial_unbiased's test finds the middle sure (both of its glint_binomial_exp_taylor3
-// factors are at least exp_taylor3(0.999 x 8.5) = 147.58, and 1.001 / 147.58 = 6.783e-3, plus
-// 1e-6 at the top), so this is its arithmetic without the setup: the same result
-// (tests/unit/test_binomial_shortcuts.cpp), in about 175 instructions against about 250 where the
-// clamp is 6 sd or more below the centre (Alg. 1's middle: 170). For N > 2 and N, p clamped; false
-// where it does not apply. glint_binomial_unbiased_cached does not take it: there it cost more than
-// it saved (callgrind, glint_frame_loop: IBL K = 4 estimates 70.0M instructions without it, 71.9M
-// with it; the point-light frame 107.9M and 110.4M), its draws mostly reusing a warm cache.
+// factors are at least exp_taylor3(0.999 x 17) = 978.6, and 1.001 / 978.6 = 1.0229e-3, plus 1e-6
+// at the top), so this is its arithmetic without the setup: the same result
+// (tests/unit/test_binomial_shortcuts.cpp), in about 175 instructions against about 250 (Alg. 1's
+// middle: 170). For N > 2 and N, p clamped; false where it does not apply. It stops at the closed
+// form's first case: taking the rest of the closed form from lambda = 8.5 on made glint_gl's IBL
+// frames on llvmpipe 12% to 20% slower (another inlined copy of the fit in every shader).
+// glint_binomial_unbiased_cached does not take it: there it cost more than it saved (callgrind,
+// glint_frame_loop: IBL K = 4 estimates 70.0M instructions without it, 71.9M with it; the
+// point-light frame 107.9M and 110.4M), its draws mostly reusing a warm cache.
 GLINT_FN bool glint_binomial_unbiased_busy(real N, real p, real u1, real u2, int method, GLINT_OUT(glint_binomial) r) {
     real p_near = min(p, real(1) - p);
     real lambda = N * p_near;
-    if (!(method != GLINT_POW_NAIVE && lambda >= GLINT_BINOMIAL_BUSY_LAMBDA && u1 >= real(6.79e-3) && u1 <= real(1) - real(6.79e-3)))
+    if (!(method != GLINT_POW_NAIVE && lambda >= GLINT_BINOMIAL_BUSY_LAMBDA && u1 >= real(1.03e-3) && u1 <= real(1) - real(1.03e-3)))
         return false;
-    // glint_binomial_busy_fit's first case from lambda = 17 on written out: the fit's call cost the
-    // draws at N p = 100 15% more instructions.
     real m = lambda - real(1);
     real sd = sqrt(lambda * (real(1) - p_near));
-    if (!glint_binomial_far_bound_clear(N, m, sd)) return false;
-    vec2 f = (lambda >= real(17) && real(6) * sd <= m) ? vec2(sd, m) : glint_binomial_busy_fit(N, p_near);
+    if (!(real(6) * sd <= m)) return false;
     bool lower = p <= real(0.5);
-    real G = glint_binomial_gaussian_count(lower ? real(1) + f.y : (N - real(1)) - f.y, f.x, lower, u2, N);
+    real G = glint_binomial_gaussian_count(lower ? real(1) + m : (N - real(1)) - m, sd, lower, u2, N);
     r = glint_binomial_pair(G, N - G);
     return true;
 }

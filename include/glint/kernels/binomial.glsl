@@ -952,8 +952,9 @@ GLINT_FN bool glint_binomial_middle_needs_no_ends(real N, real p_near) {
 // mean within 7.9e-7 and its variance within 6.0e-6 of their targets (see
 // glint_binomial_far_bound_clear). It replaced the band's polynomials from lambda = 3 to 17, and
 // the far bound's table where that bound is clear: no log2 and no table read
-// (`glint_frame_loop draw`, callgrind: 604 to 501 instructions a draw with its hashes at N = 30,
-// p = 0.1, 582 to 431 at N = 30, p = 1/2, 507 to 402 at N = 1000, p = 0.01).
+// (`glint_frame_loop draw`, callgrind: 604 to 500 instructions a draw with its hashes at N = 30,
+// p = 0.1, 582 to 480 at N = 30, p = 1/2, 507 to 447 at N = 1000, p = 0.01; 605 to 613 at N = 10,
+// p = 1/2, which the table still serves).
 
 // (sigma, sigma t) from the middle's sd, m and 1 / m (w = sd / m <= 0.78): the sampler reads only
 // sigma and the Gaussian's centre sigma t = sd B(w) A(w) / w = m A(w) B(w), so t itself, a

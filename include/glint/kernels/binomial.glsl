@@ -1003,7 +1003,7 @@ GLINT_FN vec2 glint_binomial_closed_fit_moments(real sd, real m, real inv_m) {
 GLINT_FN vec2 glint_binomial_closed_fit(real N, real p_near) {
     real lambda = N * p_near;
     real v0 = lambda * (real(1) - p_near);
-    if (lambda >= real(17)) {
+    if (lambda >= GLINT_BINOMIAL_BUSY_LAMBDA) {  // the ends weigh less than exp(-17) = 4.1e-8
         real m = lambda - real(1);
         real sd = sqrt(v0);
         return glint_binomial_closed_fit_moments(sd, m, (real(6) * sd <= m) ? real(0) : real(1) / m);

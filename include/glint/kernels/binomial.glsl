@@ -942,8 +942,12 @@ GLINT_FN bool glint_binomial_middle_needs_no_ends(real N, real p_near) {
 //   is clear, at N = 11.45, p_near = 0.262);
 // - then, for y = n - 1 on the middle, m = (lambda - 1 + eps) / (1 - eps) and
 //   v = (v0 - eps (lambda^2 + v0)) / (1 - eps)^2 with v0 = lambda (1 - p_near) (the moments of
-//   glint/binomial.hpp's step 1 with p^N = 0; free of cancellation). From lambda = 17 on eps is
-//   below exp(-17) = 4.1e-8 and is skipped: m = lambda - 1, v = v0.
+//   glint/binomial.hpp's step 1 with p^N = 0; free of cancellation). Where
+//   lambda (1 + p_near / 2 + p_near^2 / 3) >= 17 (a lower bound on -N log(1 - p_near)), eps is below
+//   exp(-17) = 4.1e-8 and is skipped: m = lambda - 1, v = v0 (from lambda = 17 as p_near -> 0
+//   down to lambda = 11.2 at p_near = 1/2: `glint_frame_loop draw 30 0.5`, callgrind, 480 to 388
+//   instructions a draw with its hashes; on a scan of N from 6 to 200 and p_near in steps of 0.001,
+//   the 24272 points it newly skips keep the mean within 1.1e-7 and the variance within 2.1e-6).
 // (t, sigma) from w = sd / m: where 6 sd <= m (the clamp 6 sd below, cutting less than
 // Phi(-6) = 1e-9 of the mass) t = m / sd and sigma = sd; above, t = A(w) / w and
 // sigma = sd B(w), polynomials of degree 6 in two pieces, fitted on [1/6, 0.39] and [0.38, 0.78]
@@ -1003,7 +1007,9 @@ GLINT_FN vec2 glint_binomial_closed_fit_moments(real sd, real m, real inv_m) {
 GLINT_FN vec2 glint_binomial_closed_fit(real N, real p_near) {
     real lambda = N * p_near;
     real v0 = lambda * (real(1) - p_near);
-    if (lambda >= GLINT_BINOMIAL_BUSY_LAMBDA) {  // the ends weigh less than exp(-17) = 4.1e-8
+    // -log(1 - p) >= p + p^2 / 2 + p^3 / 3, so here eps = (1 - p_near)^N <= exp(-17) = 4.1e-8 (from
+    // lambda = 17 at p_near -> 0 down to 11.2 at p_near = 1/2), and the far end weighs less still.
+    if (lambda * (real(1) + p_near * (real(0.5) + p_near * real(1.0 / 3.0))) >= GLINT_BINOMIAL_BUSY_LAMBDA) {
         real m = lambda - real(1);
         real sd = sqrt(v0);
         return glint_binomial_closed_fit_moments(sd, m, (real(6) * sd <= m) ? real(0) : real(1) / m);

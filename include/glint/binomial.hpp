@@ -62,11 +62,13 @@
 //      0.40): the one-sided fit in closed form (glint_binomial_closed_fit). The far end weighs
 //      less than 2.2e-7 there and is dropped; the near end's weight eps = (1 - p_near)^N comes
 //      from log(1 - p_near) (its series below p_near = 0.1) and an exp where
-//      lambda (1 + p_near / 2 + p_near^2 / 3) < 17, and is 0 from there on (< 4.1e-8; from
-//      lambda = 11.2 on at p_near = 1/2), which gives m and v in closed form; (t, sigma) come from
+//      lambda (1 + p_near / 2 + p_near^2 / 3) < 9, to first order from 9 to 17 (eps < 1.2e-4:
+//      an inline series and exp, and the fit at eps = 0 corrected by eps times the moments'
+//      derivatives), and is 0 from 17 on (< 4.1e-8; from lambda = 11.2 on at p_near = 1/2),
+//      which gives m and v in closed form; (t, sigma) come from
 //      w = sqrt(v) / m by two degree-6 polynomials in two pieces (t = m / sd, sigma = sd where
 //      6 sd <= m). The middle offset's mean within 7.9e-7 and its variance within 6.0e-6 of
-//      their targets;
+//      their targets (2.8e-6 and 3.8e-5 where eps is taken to first order);
 //    - elsewhere from N = 4 to 32: the far bound's table, scaled by sqrt(N p_near);
 //    - N >= 32 and lambda from 2^-7 to 3 (the band): the one-sided fit of step 2 as a function
 //      of (log2 lambda, 32 / N), polynomials in four pieces (glint_binomial_band_fit; made and
@@ -100,7 +102,7 @@
 // Sparse glints (N p << 1), the common case, then cost two comparisons. Where the middle is
 // drawn, its setup (step 4) costs a table read (N < 32: a log2, two sqrt and 16 node pairs, and
 // an exp), a log2, two sqrt and 21 to 24 polynomial terms per output in the band, or a sqrt and
-// two polynomials from N p = 3 on (and a log from p_near = 1/10 on and an exp where N p_near (1 + p_near / 2 + p_near^2 / 3) < 17); elsewhere the ends (a log1p and an exp), the moments, and the
+// two polynomials from N p = 3 on (and a log from p_near = 1/10 on and an exp where N p_near (1 + p_near / 2 + p_near^2 / 3) < 9); elsewhere the ends (a log1p and an exp), the moments, and the
 // one-sided fit (a log, two polynomials, an exp). The table read is
 // out of line in C++: inlined, it slowed the sampler's other paths. Measured against Alg. 1 and
 // std::binomial_distribution: docs/binomial.md.

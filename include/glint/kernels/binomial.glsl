@@ -927,6 +927,7 @@ GLINT_FN_OUT_OF_LINE vec2 glint_binomial_two_sided_fit(real N, real p_near) {
 // slower: glint_binomial_band_fit_scaled's polynomials replaced it.)
 GLINT_CONST(real) GLINT_BINOMIAL_BUSY_LAMBDA = real(17);
 GLINT_CONST(real) GLINT_BINOMIAL_CLOSED_LAMBDA = real(3);
+GLINT_CONST(real) GLINT_BINOMIAL_FIRST_ORDER_DECAY = real(9);
 GLINT_CONST(real) GLINT_BINOMIAL_BAND_LAMBDA_MIN = real(0.0078125);  // 2^-7
 
 GLINT_FN bool glint_binomial_middle_needs_no_ends(real N, real p_near) {
@@ -948,14 +949,24 @@ GLINT_FN bool glint_binomial_middle_needs_no_ends(real N, real p_near) {
 //   down to lambda = 11.2 at p_near = 1/2: `glint_frame_loop draw 30 0.5`, callgrind, 480 to 388
 //   instructions a draw with its hashes; on a scan of N from 6 to 200 and p_near in steps of 0.001,
 //   the 24272 points it newly skips keep the mean within 1.1e-7 and the variance within 2.1e-6).
+//   Where that bound lies from 9 to 17 (eps below exp(-9) = 1.2e-4), eps is taken to first order:
+//   the fit at eps = 0 times 1 + eps (dsd/deps / sd, dm/deps / m), with eps from an inline atanh
+//   series and exp (no libm call), beside the fit rather than before it; it leaves out how A and
+//   B change with w, for the middle offset's mean within 2.8e-6 and its variance within 3.8e-5 of
+//   their targets (the band's polynomials: 2.7e-6 and 1.8e-5). Per draw 482 to 431 instructions at
+//   N = 30, p = 0.3, 447 to 431 at N = 1000, p = 0.01 (`glint_frame_loop draw`, callgrind), and in
+//   a timing loop of the report's kind 40 to 32 ns against Alg. 1's 15 to 17 (this 2-core AMD
+//   EPYC): libm's log and exp cost more than their instructions there, and taking the
+//   derivatives of A and B too (12 more polynomial steps) cost 5 of the 8 ns saved.
 // (t, sigma) from w = sd / m: where 6 sd <= m (the clamp 6 sd below, cutting less than
 // Phi(-6) = 1e-9 of the mass) t = m / sd and sigma = sd; above, t = A(w) / w and
 // sigma = sd B(w), polynomials of degree 6 in two pieces, fitted on [1/6, 0.39] and [0.38, 0.78]
 // (w <= 0.756 from lambda = 3 on) by bench/fit_clamped_gaussian.cpp (|A error| 1.1e-6 and
 // 3.7e-7, B's relative error, the mean's, 7.4e-8 and 3.4e-7). Altogether the middle offset's
-// mean within 7.9e-7 and its variance within 6.0e-6 of their targets (see
-// glint_binomial_far_bound_clear). It replaced the band's polynomials from lambda = 3 to 17, and
-// the far bound's table where that bound is clear: no log2 and no table read
+// mean within 7.9e-7 and its variance within 6.0e-6 of their targets where eps is exact or
+// skipped (see glint_binomial_far_bound_clear), 2.8e-6 and 3.8e-5 where it is to first order. It
+// replaced the band's polynomials from lambda = 3 to 17, and the far bound's table where that
+// bound is clear: no log2 and no table read
 // (`glint_frame_loop draw`, callgrind: 604 to 500 instructions a draw with its hashes at N = 30,
 // p = 0.1, 582 to 480 at N = 30, p = 1/2, 507 to 447 at N = 1000, p = 0.01; 605 to 613 at N = 10,
 // p = 1/2, which the table still serves).
@@ -1007,34 +1018,64 @@ GLINT_FN vec2 glint_binomial_closed_fit_moments(real sd, real m, real inv_m) {
 GLINT_FN vec2 glint_binomial_closed_fit(real N, real p_near) {
     real lambda = N * p_near;
     real v0 = lambda * (real(1) - p_near);
-    // -log(1 - p) >= p + p^2 / 2 + p^3 / 3, so here eps = (1 - p_near)^N <= exp(-17) = 4.1e-8 (from
-    // lambda = 17 at p_near -> 0 down to 11.2 at p_near = 1/2), and the far end weighs less still.
-    if (lambda * (real(1) + p_near * (real(0.5) + p_near * real(1.0 / 3.0))) >= GLINT_BINOMIAL_BUSY_LAMBDA) {
-        real m = lambda - real(1);
-        real sd = sqrt(v0);
-        return glint_binomial_closed_fit_moments(sd, m, (real(6) * sd <= m) ? real(0) : real(1) / m);
+    // A lower bound on -N log(1 - p_near) = -log(eps) (-log(1 - p) >= p + p^2 / 2 + p^3 / 3).
+    real decay = lambda * (real(1) + p_near * (real(0.5) + p_near * real(1.0 / 3.0)));
+    real m = lambda - real(1);
+    real sd, inv_m;
+    vec2 first_order = vec2(real(0));  // (sigma, sigma t) = f (1 + first_order), f at eps = 0
+    if (decay >= GLINT_BINOMIAL_BUSY_LAMBDA) {
+        // eps <= exp(-17) = 4.1e-8 (from lambda = 17 at p_near -> 0 down to 11.2 at p_near = 1/2),
+        // and the far end weighs less still: m = lambda - 1, v = v0.
+        sd = sqrt(v0);
+        inv_m = real(1) / m;
+    } else if (decay >= GLINT_BINOMIAL_FIRST_ORDER_DECAY) {
+        // eps <= exp(-9) = 1.2e-4: the fit at eps = 0 times 1 + eps (dsd/deps / sd, dm/deps / m),
+        // dm/deps = lambda, dv/deps = v0 - lambda^2 at eps = 0, leaving out how A and B change
+        // with w (taking their derivatives too cost 5 of the 8 ns this saves a draw). eps
+        // itself without a libm call: log(1 - p) = 2 atanh(z), z = -p / (2 - p) in [-1/3, 0), by
+        // its series to z^7 / 7 (relative error below (1/3)^8 / 9 = 1.7e-5), and exp(x) =
+        // 2^k exp(r), k the integer nearest x / log(2) (truncation rounds for x <= 0), r in
+        // [-0.347, 0.347] by Taylor's polynomial of degree 4 (relative error below 4.2e-5): eps
+        // within 3.4e-4 of itself (|x| <= 17 log(2) / (2/3) = 17.7 here), which moves the mean
+        // by under 5e-8.
+        real z = -p_near / (real(2) - p_near);
+        real z2 = z * z;
+        real x = N * (real(2) * z * (real(1) + z2 * (real(1.0 / 3.0) + z2 * (real(0.2) + z2 * real(1.0 / 7.0)))));
+        real y = x * real(1.4426950408889634);  // 1 / log(2)
+        int k = int(y - real(0.5));
+        real r = (y - real(k)) * real(0.69314718055994531);  // log(2)
+        real e = real(1) + r * (real(1) + r * (real(0.5) + r * (real(1.0 / 6.0) + r * real(1.0 / 24.0))));
+        real eps = e * real(uintBitsToFloat(uint(k + 127) << 23u));
+        sd = sqrt(v0);
+        inv_m = real(1) / m;
+        first_order = eps * vec2(real(0.5) - real(0.5) * lambda / (real(1) - p_near), lambda * inv_m);
+    } else {
+        // log(1 - p_near): its series up to p^6 below p = 0.1 (relative error below p^6 / 6.3 =
+        // 1.6e-7; there 1 - p would round away up to 6e-8 / p of it), log itself from there on (its
+        // rounding of 1 - p: 6e-7 at most).
+        real series = real(1.0 / 5.0) + p_near * real(1.0 / 6.0);
+        series = real(1) + p_near * (real(0.5) + p_near * (real(1.0 / 3.0) + p_near * (real(0.25) + p_near * series)));
+        real eps = exp(N * ((p_near < real(0.1)) ? -p_near * series : log(real(1) - p_near)));
+        // With P(M) = 1 - eps and E[y 1_M] = lambda - 1 + eps: m = E[y 1_M] / P(M), and
+        // sd = sqrt(v0 - eps (lambda^2 + v0)) / P(M), from one division.
+        real mass = real(1) - eps;
+        real excess = m + eps;
+        real q = real(1) / (mass * excess);
+        sd = sqrt(v0 - eps * (lambda * lambda + v0)) * (excess * q);
+        m = excess * (excess * q);
+        inv_m = mass * (mass * q);
     }
-    // log(1 - p_near): its series up to p^6 below p = 0.1 (relative error below p^6 / 6.3 = 1.6e-7;
-    // there 1 - p would round away up to 6e-8 / p of it), log itself from there on (its rounding
-    // of 1 - p: 6e-7 at most).
-    real series = real(1.0 / 5.0) + p_near * real(1.0 / 6.0);
-    series = real(1) + p_near * (real(0.5) + p_near * (real(1.0 / 3.0) + p_near * (real(0.25) + p_near * series)));
-    real eps = exp(N * ((p_near < real(0.1)) ? -p_near * series : log(real(1) - p_near)));
-    // With P(M) = 1 - eps and E[y 1_M] = lambda - 1 + eps: m = E[y 1_M] / P(M), and
-    // sd = sqrt(v0 - eps (lambda^2 + v0)) / P(M), from one division.
-    real mass = real(1) - eps;
-    real excess = (lambda - real(1)) + eps;
-    real r = real(1) / (mass * excess);
-    real root = sqrt(v0 - eps * (lambda * lambda + v0));
-    return glint_binomial_closed_fit_moments(root * (excess * r), excess * (excess * r), mass * (mass * r));
+    vec2 f = glint_binomial_closed_fit_moments(sd, m, inv_m);
+    return f + f * first_order;
 }
 
 // Whether the far bound N - 2 lies 5 sd or more above lambda - 1, with sd = sqrt(lambda
 // (1 - p_near)), the binomial's own: there the closed form's middle offset, capped at N - 2, keeps
-// its mean within 7.9e-7 and its variance within 6.0e-6 of their targets, the cap and the far end
-// included (on N from 6 to 40 in steps of 0.05 x p_near in steps of 0.001; the unit test in
-// tests/unit/test_binomial_model.cpp checks integer N). From moments that need no exp, so that a
-// draw the table must serve does not pay for the closed form first.
+// its mean within 7.9e-7 and its variance within 6.0e-6 of their targets (2.8e-6 and 3.8e-5
+// where eps is to first order), the cap and the far end included (on N from 6 to 40 in steps of
+// 0.05 and from 40 to 3000 in factors of 1.005, x p_near in steps of 0.001 and in factors of
+// 1.005; the unit test in tests/unit/test_binomial_model.cpp checks integer N). From moments that
+// need no exp, so that a draw the table must serve does not pay for the closed form first.
 GLINT_FN bool glint_binomial_far_bound_clear(real N, real m0, real sd0) {
     return m0 + real(5) * sd0 <= N - real(2);
 }

@@ -1024,32 +1024,31 @@ GLINT_FN vec2 glint_binomial_closed_fit(real N, real p_near) {
     real m = lambda - real(1);
     real sd, inv_m;
     vec2 first_order = vec2(real(0));  // (sigma, sigma t) = f (1 + first_order), f at eps = 0
-    if (decay >= GLINT_BINOMIAL_BUSY_LAMBDA) {
-        // eps <= exp(-17) = 4.1e-8 (from lambda = 17 at p_near -> 0 down to 11.2 at p_near = 1/2),
-        // and the far end weighs less still: m = lambda - 1, v = v0.
+    if (decay >= GLINT_BINOMIAL_FIRST_ORDER_DECAY) {
         sd = sqrt(v0);
         inv_m = real(1) / m;
-    } else if (decay >= GLINT_BINOMIAL_FIRST_ORDER_DECAY) {
-        // eps <= exp(-9) = 1.2e-4: the fit at eps = 0 times 1 + eps (dsd/deps / sd, dm/deps / m),
-        // dm/deps = lambda, dv/deps = v0 - lambda^2 at eps = 0, leaving out how A and B change
-        // with w (taking their derivatives too cost 5 of the 8 ns this saves a draw). eps
-        // itself without a libm call: log(1 - p) = 2 atanh(z), z = -p / (2 - p) in [-1/3, 0), by
-        // its series to z^7 / 7 (relative error below (1/3)^8 / 9 = 1.7e-5), and exp(x) =
-        // 2^k exp(r), k the integer nearest x / log(2) (truncation rounds for x <= 0), r in
-        // [-0.347, 0.347] by Taylor's polynomial of degree 4 (relative error below 4.2e-5): eps
-        // within 3.4e-4 of itself (|x| <= 17 log(2) / (2/3) = 17.7 here), which moves the mean
-        // by under 5e-8.
-        real z = -p_near / (real(2) - p_near);
-        real z2 = z * z;
-        real x = N * (real(2) * z * (real(1) + z2 * (real(1.0 / 3.0) + z2 * (real(0.2) + z2 * real(1.0 / 7.0)))));
-        real y = x * real(1.4426950408889634);  // 1 / log(2)
-        int k = int(y - real(0.5));
-        real r = (y - real(k)) * real(0.69314718055994531);  // log(2)
-        real e = real(1) + r * (real(1) + r * (real(0.5) + r * (real(1.0 / 6.0) + r * real(1.0 / 24.0))));
-        real eps = e * real(uintBitsToFloat(uint(k + 127) << 23u));
-        sd = sqrt(v0);
-        inv_m = real(1) / m;
-        first_order = eps * vec2(real(0.5) - real(0.5) * lambda / (real(1) - p_near), lambda * inv_m);
+        // From decay = 17 on eps <= exp(-17) = 4.1e-8 (from lambda = 17 at p_near -> 0 down to 11.2
+        // at p_near = 1/2), and the far end weighs less still: m = lambda - 1, v = v0.
+        if (decay < GLINT_BINOMIAL_BUSY_LAMBDA) {
+            // eps <= exp(-9) = 1.2e-4: the fit at eps = 0 times 1 + eps (dsd/deps / sd, dm/deps /
+            // m), dm/deps = lambda, dv/deps = v0 - lambda^2 at eps = 0, leaving out how A and B
+            // change with w (taking their derivatives too cost 5 of the 8 ns this saves a draw).
+            // eps itself without a libm call: log(1 - p) = 2 atanh(z), z = -p / (2 - p) in [-1/3,
+            // 0), by its series to z^7 / 7 (relative error below (1/3)^8 / 9 = 1.7e-5), and exp(x)
+            // = 2^k exp(r), k the integer nearest x / log(2) (truncation rounds for x <= 0), r in
+            // [-0.347, 0.347] by Taylor's polynomial of degree 4 (relative error below 4.2e-5): eps
+            // within 3.4e-4 of itself (|x| <= 17 log(2) / (2/3) = 17.7 here), which moves the mean
+            // by under 5e-8.
+            real z = -p_near / (real(2) - p_near);
+            real z2 = z * z;
+            real x = N * (real(2) * z * (real(1) + z2 * (real(1.0 / 3.0) + z2 * (real(0.2) + z2 * real(1.0 / 7.0)))));
+            real y = x * real(1.4426950408889634);  // 1 / log(2)
+            int k = int(y - real(0.5));
+            real r = (y - real(k)) * real(0.69314718055994531);  // log(2)
+            real e = real(1) + r * (real(1) + r * (real(0.5) + r * (real(1.0 / 6.0) + r * real(1.0 / 24.0))));
+            real eps = e * glint_exp2_int(k);
+            first_order = eps * vec2(real(0.5) - real(0.5) * lambda / (real(1) - p_near), lambda * inv_m);
+        }
     } else {
         // log(1 - p_near): its series up to p^6 below p = 0.1 (relative error below p^6 / 6.3 =
         // 1.6e-7; there 1 - p would round away up to 6e-8 / p of it), log itself from there on (its

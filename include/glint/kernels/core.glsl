@@ -69,6 +69,13 @@ GLINT_FN int glint_bit_count(uint x) {
 #endif
 }
 
+// 2^n for |n| <= 30 (exact for n from -126 to 127), exact, without a libm call (ldexp and exp2 cost one each in C++): the float
+// whose exponent field is n + 127 and whose mantissa is 0. (A division for n < 0 cost 78 of the
+// point-light frame's instructions per glinty pixel.)
+GLINT_FN real glint_exp2_int(int n) {
+    return real(uintBitsToFloat(uint(n + 127) << 23u));
+}
+
 // A uniform variate in [0, 1) from the top 24 bits of a hash: k * 2^-24, exact in float.
 GLINT_FN real glint_unit_from_bits(uint h) {
     return real(h >> 8u) * real(5.9604644775390625e-8);  // 2^-24

@@ -128,13 +128,6 @@ GLINT_FN glint_lattice glint_footprint_lattice(glint_footprint f, real lod_scale
                                 ivec4(level, level.z), ivec4(bin, bin.z));
 }
 
-// 2^n for |n| <= 30, exact, without a libm call (ldexp and exp2 cost one each in C++): the float
-// whose exponent field is n + 127 and whose mantissa is 0. (A division for n < 0 cost 78 of the
-// point-light frame's instructions per glinty pixel.)
-GLINT_FN real glint_exp2_int(int n) {
-    return real(uintBitsToFloat(uint(n + 127) << 23u));
-}
-
 // cos and sin of a lattice rotation, bin * pi / 2^(level + 1) = k pi / 32 (level <= 4), from
 // the correctly rounded values of cos(j pi / 32), j = 0..8 (mpmath, 22 digits) and the
 // symmetries cos(pi/2 - x) = sin x, cos(x + pi/2) = -sin x: exact to the last bit, and without

@@ -947,15 +947,15 @@ GLINT_FN bool glint_binomial_middle_needs_no_ends(real N, real p_near) {
 //   lambda (1 + p_near / 2 + p_near^2 / 3) >= 17 (a lower bound on -N log(1 - p_near)), eps is below
 //   exp(-17) = 4.1e-8 and is skipped: m = lambda - 1, v = v0 (from lambda = 17 as p_near -> 0
 //   down to lambda = 11.2 at p_near = 1/2: `glint_frame_loop draw 30 0.5`, callgrind, 480 to 388
-//   instructions a draw with its hashes, 380 with the first order below; on a scan of N from 6
+//   instructions a draw with its hashes, 383 with the first order below; on a scan of N from 6
 //   to 200 and p_near in steps of 0.001, the 24272 points it newly skips keep the mean within
 //   1.1e-7 and the variance within 2.1e-6).
 //   Where that bound lies from 9 to 17 (eps below exp(-9) = 1.2e-4), eps is taken to first order:
 //   the fit at eps = 0 times 1 + eps (dsd/deps / sd, dm/deps / m), with eps from an inline atanh
 //   series and exp (no libm call), beside the fit rather than before it; it leaves out how A and
 //   B change with w, for the middle offset's mean within 2.8e-6 and its variance within 3.8e-5 of
-//   their targets (the band's polynomials: 2.7e-6 and 1.8e-5). Per draw 482 to 431 instructions at
-//   N = 30, p = 0.3, 447 to 431 at N = 1000, p = 0.01 (`glint_frame_loop draw`, callgrind), and in
+//   their targets (the band's polynomials: 2.7e-6 and 1.8e-5). Per draw 482 to 429 instructions at
+//   N = 30, p = 0.3, 447 to 429 at N = 1000, p = 0.01 (`glint_frame_loop draw`, callgrind), and in
 //   a timing loop of the report's kind 40 to 32 ns against Alg. 1's 15 to 17 (this 2-core AMD
 //   EPYC): libm's log and exp cost more than their instructions there, and taking the
 //   derivatives of A and B too (12 more polynomial steps) cost 5 of the 8 ns saved.

@@ -195,7 +195,7 @@ closed_fit_errors busy_fit_errors(bool without_eps) {
             f = glm::dvec3(h.y / h.x, h.x, h.y);
         }
         const auto m = K::glint_capped_offset_moments(f.x, f.y, N - 2);
-        const double decay = lambda * (1 + p * (0.5 + p / 3));
+        const double decay = K::glint_binomial_near_end_decay(lambda, p);
         const bool first_order = decay >= K::GLINT_BINOMIAL_FIRST_ORDER_DECAY && decay < K::GLINT_BINOMIAL_BUSY_LAMBDA;
         auto& worst = first_order ? out.first_order : out.exact;
         out.first_order_points += first_order ? 1 : 0;

@@ -1015,12 +1015,18 @@ GLINT_FN vec2 glint_binomial_closed_fit_moments(real sd, real m, real inv_m) {
     return vec2(sd * b, m * (a * b));
 }
 
+// A lower bound on -N log(1 - p_near) = -log(eps), eps the near end's weight (-log(1 - p) >= p +
+// p^2 / 2 + p^3 / 3): glint_binomial_closed_fit skips eps from 17 on and takes it to first order
+// from GLINT_BINOMIAL_FIRST_ORDER_DECAY.
+GLINT_FN real glint_binomial_near_end_decay(real lambda, real p_near) {
+    return lambda * (real(1) + p_near * (real(0.5) + p_near * real(1.0 / 3.0)));
+}
+
 // (sigma, sigma t) of the middle at (N, p_near), lambda = N p_near >= 3.
 GLINT_FN vec2 glint_binomial_closed_fit(real N, real p_near) {
     real lambda = N * p_near;
     real v0 = lambda * (real(1) - p_near);
-    // A lower bound on -N log(1 - p_near) = -log(eps) (-log(1 - p) >= p + p^2 / 2 + p^3 / 3).
-    real decay = lambda * (real(1) + p_near * (real(0.5) + p_near * real(1.0 / 3.0)));
+    real decay = glint_binomial_near_end_decay(lambda, p_near);
     real m = lambda - real(1);
     real sd, inv_m;
     vec2 first_order = vec2(real(0));  // (sigma, sigma t) = f (1 + first_order), f at eps = 0

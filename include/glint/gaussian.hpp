@@ -45,23 +45,23 @@
 // down to one cell. Each element is listed, at the finest level where its s-box overlaps at most 8
 // cells, in every cell it overlaps there, as a copy (element and s-box, so that a query reads its
 // lists in order); each cell's list is sorted along a Morton curve of the lattice positions, with a
-// bounding-box tree over runs of 8 (the position tree). A query visits the cell holding s at every
-// level and, for each periodic image of the map the footprint's culling box touches, the nodes
-// whose boxes it overlaps: its cost follows the footprint's elements whose normals are near s,
-// not all of them: the elements that contribute, plus those whose s-boxes hold s without their
-// lobes reaching it (on the flakes map of docs/microstructure.md at footprint sd 64: 13 visited and
-// 2.4 evaluated per one that contributes; term_count counts those). That count still grows with
-// the footprint's area at a fixed s (flakes: 123, 3620 and 243638 terms at sd 8, 64 and 512, at
-// 150 to 260 ns per term): an exact sum cannot do better, and only prefiltered node NDFs
+// bounding-box tree over runs of leaf_size = 32 (the position tree). A query visits the cell holding
+// s at every level and, for each periodic image of the map the footprint's culling box touches, the
+// nodes whose boxes it overlaps, in memory order: its cost follows the footprint's elements whose
+// normals are near s, not all of them: the elements that contribute, plus those whose s-boxes hold
+// s without their lobes reaching it (on the flakes map of docs/microstructure.md at footprint sd
+// 64: 12 tested and 2.6 evaluated per one that contributes; term_count counts those). That count
+// still grows with the footprint's area at a fixed s (flakes: 123, 3620 and 243638 terms at sd 8, 64
+// and 512, at 90 to 115 ns per term): an exact sum cannot do better, and only prefiltered node NDFs
 // (XTXW24's maps, ZXW's K-lobes) make the cost sublinear. (Summing nodes of equal lobes as one
 // moment-matched term saved nothing measurable there: 91 to 92% of the terms from sd 64 on come
-// from the flakes' edges, whose lobes differ.) Where the lists would be longer than the footprint's lattice
-// (maps whose lobes are as wide as their normals' spread), eval sums the lattice directly instead;
-// such maps can leave the hierarchy out (gaussian_params::hierarchy). Footprints so wide that the
-// periodic images blur into the map's average (large_footprint below: error below 4e-8) use the
-// continuum limit of the periodic sum, sum_i marginal_i(s) / map area, which is exact as the
-// footprint grows (the lobe's mean shift, averaged over the images, adds sigma_h^4 J kappa^-1 J^T
-// to C, which makes it sigma_h^2 J J^T).
+// from the flakes' edges, whose lobes differ.) Where the lists would cost more than the footprint's
+// lattice (hierarchy_pays: maps whose lobes are as wide as their normals' spread), eval sums the
+// lattice directly instead; such maps can leave the hierarchy out (gaussian_params::hierarchy).
+// Footprints so wide that the periodic images blur into the map's average (large_footprint below:
+// error below 4e-8) use the continuum limit of the periodic sum, sum_i marginal_i(s) / map area,
+// which is exact as the footprint grows (the lobe's mean shift, averaged over the images, adds
+// sigma_h^4 J kappa^-1 J^T to C, which makes it sigma_h^2 J J^T).
 //
 // Domains. sigma_r in [1e-4, 1] (the kernels clamp it below at 1e-5); footprint covariances
 // finite and positive semi-definite (0 is a point footprint); s finite. Per-pixel calls never
@@ -381,6 +381,11 @@ private:
     struct box {
         float x0, y0, x1, y1;
     };
+    // Elements per leaf of a position tree. A query costs more per node it visits than per
+    // element it tests in a leaf's run, which it reads in memory order (on the flakes map of
+    // docs/microstructure.md, relative to runs of 8: 4 took 1.2x the time at footprint sd 64,
+    // 16 0.9x, 32 0.8x, 64 0.8x but 1.1x at sd 8).
+    static constexpr std::uint32_t leaf_size = 32;
 
     frame prepare(const texel_footprint<real>& fp, real cull_u, real cull_s) const {
         const auto& c = fp.covariance;
@@ -421,16 +426,11 @@ private:
         }
     }
 
-    // The lattice loop of glint_pndf_direct (the same elements and terms), skipping first the
-    // elements whose s-box excludes s.
-    real direct_sum(const frame& f, const vec2& s, const params& k) const {
-        real sum = 0;
-        for_each_in_box(f, k, [&](std::size_t e, const element& el, const vec2& u) {
-            if (outside(bound_[e], el, s)) return;
-            sum += kernels::glint_pndf_element(el, u, f, s, k);
-        });
-        return sum;
-    }
+    // The lattice loop of glint_pndf_direct under params k. (Testing each element's s-box first
+    // saved 9% to 16% on the flakes map of docs/microstructure.md, where eval takes the hierarchy,
+    // but cost 26% to 29% more on the noise map, where it takes this loop: the kernel's own
+    // culling tests come before its exp.)
+    real direct_sum(const frame& f, const vec2& s, const params& k) const { return kernels::glint_pndf_direct(data_.data(), f, s, k); }
 
     // sum_i marginal_i(s) / (map area): the exact limit of the periodic sum for huge footprints.
     real continuum_limit(const vec2& s) const {
@@ -466,9 +466,11 @@ private:
         const double area = 4.0 * static_cast<double>(f.extent.x) * static_cast<double>(f.extent.y);
         const double map_area = static_cast<double>(period_.x) * static_cast<double>(period_.y);
         const double spacing2 = static_cast<double>(k_.spacing) * static_cast<double>(k_.spacing);
-        // The listed elements inside the box (1.5 for the tree's visits per element found, and 64
-        // per level for the descents), against every lattice point of the box.
-        return 1.5 * listed * area / map_area + 64.0 * level_count() < area / spacing2;
+        // The listed elements inside the box against every lattice point of the box, in units of
+        // the direct loop's cost per lattice point (measured on the flakes and noise maps of
+        // docs/microstructure.md at footprint sd 1 to 64: the hierarchy about 2000 ns a query plus
+        // 4 to 16 ns per listed element in the box, the loop 8 to 17 ns per lattice point).
+        return 1.2 * listed * area / map_area + 48.0 * level_count() < area / spacing2;
     }
 
     // The hierarchy's D_P(s): the cell holding s at every level.
@@ -504,7 +506,7 @@ private:
     real query(std::size_t c, const frame& f, const vec2& s) const {
         const std::uint32_t begin = cell_begin_[c], end = cell_begin_[c + 1];
         if (begin == end) return real(0);
-        const std::uint32_t leaves = (end - begin + 7) / 8;
+        const std::uint32_t leaves = (end - begin + leaf_size - 1) / leaf_size;
         std::uint32_t p2 = 1;
         while (p2 < leaves) p2 *= 2;
         const box* tree = nodes_.data() + node_begin_[c];
@@ -536,15 +538,17 @@ private:
                     if (std::fabs(cx * ax + cy * ay) > hx * std::fabs(ax) + hy * std::fabs(ay) + e1 * 1.001f + 1e-3f) continue;
                     if (std::fabs(-cx * ay + cy * ax) > hx * std::fabs(ay) + hy * std::fabs(ax) + e2 * 1.001f + 1e-3f) continue;
                     if (node >= p2) {
-                        const std::uint32_t first = begin + 8 * (node - p2), last = std::min(end, first + 8);
+                        const std::uint32_t first = begin + leaf_size * (node - p2), last = std::min(end, first + leaf_size);
                         for (std::uint32_t r = first; r < last; ++r) {
                             const listed_element& x = listed_[r];
                             if (outside(x.bound, x.el, s)) continue;
                             sum += kernels::glint_pndf_element(x.el, vec2(x.el.us.x, x.el.us.y) + offset, f, s, k_);
                         }
                     } else {
-                        stack[top++] = 2 * node;
+                        // The left child on top, so that leaves come in memory order (which the
+                        // hardware prefetcher follows: 1.3x to 1.8x faster than the reverse).
                         stack[top++] = 2 * node + 1;
+                        stack[top++] = 2 * node;
                     }
                 }
             }
@@ -620,7 +624,7 @@ private:
         std::sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) { return key[a] < key[b] || (key[a] == key[b] && a < b); });
         for (const std::uint32_t e : order)
             for_each_cell(e, level_[e], [&](std::size_t c) { listed_[fill[c]++] = listed_element{element{data_[2 * e], data_[2 * e + 1]}, bound_[e]}; });
-        // Position trees: a complete binary tree (heap order, root 1) over runs of 8 per cell.
+        // Position trees: a complete binary tree (heap order, root 1) over runs of leaf_size per cell.
         node_begin_.assign(cells, 0);
         nodes_.clear();
         const box empty{std::numeric_limits<float>::max(), std::numeric_limits<float>::max(), -std::numeric_limits<float>::max(),
@@ -629,14 +633,14 @@ private:
             const std::uint32_t begin = cell_begin_[c], end = cell_begin_[c + 1];
             node_begin_[c] = static_cast<std::uint32_t>(nodes_.size());
             if (begin == end) continue;
-            const std::uint32_t leaves = (end - begin + 7) / 8;
+            const std::uint32_t leaves = (end - begin + leaf_size - 1) / leaf_size;
             std::uint32_t p2 = 1;
             while (p2 < leaves) p2 *= 2;
             const std::size_t base = nodes_.size();
             nodes_.resize(base + 2 * p2, empty);
             for (std::uint32_t l = 0; l < leaves; ++l) {
                 box b = empty;
-                for (std::uint32_t q = begin + 8 * l; q < std::min(end, begin + 8 * l + 8); ++q) {
+                for (std::uint32_t q = begin + leaf_size * l; q < std::min(end, begin + leaf_size * (l + 1)); ++q) {
                     const float x = static_cast<float>(listed_[q].el.us.x), y = static_cast<float>(listed_[q].el.us.y);
                     // Widened by an ulp-scale margin so the float box test never drops a boundary element.
                     const float m = 1e-3f;

@@ -212,8 +212,8 @@ GLINT_FN real glint_pndf_lobe_q(glint_pndf_lobe l, vec2 s, real sigma_r) {
 
 // I_i(s) with culling (cull_u, cull_s; a radius <= 0 disables it).
 // Both culling tests come before any exp, and one exp gives the weight's and the lobe's factors
-// (exp(-m/2) exp(-q/2)): most elements that reach here are culled (on the flakes map of
-// docs/microstructure.md at footprint sd 64, 2.3 per nonzero term).
+// (exp(-m/2) exp(-q/2)): most elements that reach it are culled (on the flakes map of
+// docs/microstructure.md at footprint sd 64 through the hierarchy, 2.6 reach it per nonzero term).
 GLINT_FN real glint_pndf_element(glint_gaussian_element el, vec2 u_i, glint_pndf_frame f, vec2 s, glint_pndf_params p) {
     vec2 e = glint_pndf_offset(u_i, f);
     real m = glint_pndf_mahalanobis_u(e, f);

@@ -1421,7 +1421,7 @@ private:
         const real q = (myy * e.x * e.x - real(2) * mxy * e.x * e.y + mxx * e.y * e.y) / det;
         // The members' taper at the centroid (in the footprint's own metric, as the seeds').
         const vec2 eo = kernels::glint_pndf_offset(u_mean, f);
-        const real m = eo.x * eo.x / f.kappa.x + eo.y * eo.y / f.kappa.y;
+        const real m = kernels::glint_pndf_mahalanobis_u(eo, f);
         const real win = kernels::glint_pndf_window(m, k_.cull_u);
         if (!(win > real(0))) {
             if (window_cut) *window_cut = true;
@@ -1432,11 +1432,9 @@ private:
     }
 
     // Whether a seed at u lies outside the footprint's culling ellipse, where its term is 0: the
-    // kernel's own test (glint_pndf_element_lobe's Mahalanobis radius, the same arithmetic), made
-    // before the term's exponentials.
+    // kernel's own test (glint_pndf_element's, the same arithmetic), made before the term.
     bool outside_footprint(const vec2& u, const frame& f) const noexcept {
-        const vec2 e = kernels::glint_pndf_offset(u, f);
-        return e.x * e.x / f.kappa.x + e.y * e.y / f.kappa.y > k_.cull_u * k_.cull_u;
+        return kernels::glint_pndf_mahalanobis_u(kernels::glint_pndf_offset(u, f), f) > k_.cull_u * k_.cull_u;
     }
 
     static bool outside_sbox(const vec4& b, const element& el, const vec2& s) {

@@ -158,10 +158,15 @@ GLINT_FN vec2 glint_pndf_offset(vec2 u_i, glint_pndf_frame f) {
     return vec2(f.axis.x * d.x + f.axis.y * d.y, -f.axis.y * d.x + f.axis.x * d.y);
 }
 
+// The squared Mahalanobis radius of footprint offset e, sum e_k^2 / kappa_k.
+GLINT_FN real glint_pndf_mahalanobis_u(vec2 e, glint_pndf_frame f) {
+    return e.x * e.x / f.kappa.x + e.y * e.y / f.kappa.y;
+}
+
 // The tapered spatial weight w_i of an element at u_i (0 outside the culling ellipse).
 GLINT_FN real glint_pndf_element_weight(vec2 u_i, glint_pndf_frame f, glint_pndf_params p) {
     vec2 e = glint_pndf_offset(u_i, f);
-    real m = e.x * e.x / f.kappa.x + e.y * e.y / f.kappa.y;
+    real m = glint_pndf_mahalanobis_u(e, f);
     if (p.cull_u > real(0) && m > p.cull_u * p.cull_u) return real(0);
     return p.area * f.norm * exp(real(-0.5) * m) * glint_pndf_window(m, p.cull_u);
 }
@@ -187,10 +192,6 @@ GLINT_FN glint_pndf_lobe glint_pndf_lobe_shape(glint_gaussian_element el, vec2 e
     real det_b = (el.jac.x * el.jac.w - el.jac.z * el.jac.y) * f.spread.x * f.spread.y;
     l.det_c = sr2 * sr2 + sr2 * (dot(b1, b1) + dot(b2, b2)) + det_b * det_b;
     return l;
-}
-
-GLINT_FN real glint_pndf_mahalanobis_u(vec2 e, glint_pndf_frame f) {
-    return e.x * e.x / f.kappa.x + e.y * e.y / f.kappa.y;
 }
 
 GLINT_FN glint_pndf_lobe glint_pndf_element_lobe(glint_gaussian_element el, vec2 u_i, glint_pndf_frame f, glint_pndf_params p) {

@@ -69,9 +69,9 @@ GLINT_FN int glint_bit_count(uint x) {
 #endif
 }
 
-// 2^n for |n| <= 30 (exact for n from -126 to 127), exact, without a libm call (ldexp and exp2 cost one each in C++): the float
-// whose exponent field is n + 127 and whose mantissa is 0. (A division for n < 0 cost 78 of the
-// point-light frame's instructions per glinty pixel.)
+// 2^n for n from -126 to 127, exact, without a libm call (ldexp and exp2 cost one each in C++):
+// the float whose exponent field is n + 127 and whose mantissa is 0. (A division for n < 0 cost 78
+// of the point-light frame's instructions per glinty pixel.)
 GLINT_FN real glint_exp2_int(int n) {
     return real(uintBitsToFloat(uint(n + 127) << 23u));
 }

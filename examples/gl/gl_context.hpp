@@ -1,6 +1,6 @@
 // A headless OpenGL 4.5 core context through EGL, for glint_gl: the surfaceless platform (Mesa,
 // and NVIDIA's driver), else the first EGL device (EGL_EXT_platform_device), else the default
-// display; no window, no pbuffer (EGL_KHR_surfaceless_context), rendering into framebuffer
+// display, starting from the platform named (a driver may offer one and fail in it); no window, no pbuffer (EGL_KHR_surfaceless_context), rendering into framebuffer
 // objects. GL functions are the exports of glvnd's libOpenGL.so.0 (GL_GLEXT_PROTOTYPES).
 #pragma once
 
@@ -17,8 +17,9 @@ namespace glint_gl {
 
 class gl_context {
 public:
-    gl_context() {
-        display_ = open_display();
+    // first: "surfaceless", "device" or "default", the platform tried first.
+    explicit gl_context(const std::string& first = "surfaceless") {
+        display_ = open_display(first);
         EGLint major = 0, minor = 0;
         if (!eglInitialize(display_, &major, &minor)) throw std::runtime_error("glint_gl: eglInitialize failed");
         if (!eglBindAPI(EGL_OPENGL_API)) throw std::runtime_error("glint_gl: eglBindAPI(EGL_OPENGL_API) failed");
@@ -52,9 +53,16 @@ public:
     static std::string version() { return reinterpret_cast<const char*>(glGetString(GL_VERSION)); }
 
 private:
-    static EGLDisplay open_display() {
-        EGLDisplay d = eglGetPlatformDisplay(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
-        if (d != EGL_NO_DISPLAY && eglInitialize(d, nullptr, nullptr)) return d;
+    static EGLDisplay open_display(const std::string& first) {
+        EGLDisplay d = EGL_NO_DISPLAY;
+        if (first == "default") {
+            d = eglGetDisplay(EGL_DEFAULT_DISPLAY);
+            if (d != EGL_NO_DISPLAY && eglInitialize(d, nullptr, nullptr)) return d;
+        }
+        if (first != "device") {
+            d = eglGetPlatformDisplay(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
+            if (d != EGL_NO_DISPLAY && eglInitialize(d, nullptr, nullptr)) return d;
+        }
         const auto query_devices = reinterpret_cast<PFNEGLQUERYDEVICESEXTPROC>(eglGetProcAddress("eglQueryDevicesEXT"));
         if (query_devices) {
             EGLDeviceEXT device[4];
@@ -63,6 +71,10 @@ private:
                 d = eglGetPlatformDisplay(EGL_PLATFORM_DEVICE_EXT, device[0], nullptr);
                 if (d != EGL_NO_DISPLAY && eglInitialize(d, nullptr, nullptr)) return d;
             }
+        }
+        if (first == "device") {
+            d = eglGetPlatformDisplay(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
+            if (d != EGL_NO_DISPLAY && eglInitialize(d, nullptr, nullptr)) return d;
         }
         d = eglGetDisplay(EGL_DEFAULT_DISPLAY);
         if (d == EGL_NO_DISPLAY) throw std::runtime_error("glint_gl: no EGL display (surfaceless, device or default)");

@@ -7,11 +7,18 @@
 // CPU ray tracer of examples/lights.cpp and examples/ibl.cpp (its own geometry and footprints).
 //
 //   glint_gl [--size WxH] [--frames N] [--warmup N] [--scenes LIST] [--compare] [--no-images]
-//            [--env PATH.exr] [--out DIR]
+//            [--env PATH.exr] [--out DIR] [--egl surfaceless|device|default] [--pragma TEXT]...
 //
 // Scenes: point, sun, area (the lights scene), ibl4, ibl8 (K = 4, 8), each with glints and with
 // the smooth BRDF; LIST is comma-separated (default: all). Timings go to stdout and, with --out,
-// to DIR/glint_gl.md; the device is GL_RENDERER.
+// to DIR/glint_gl.md; the device is GL_RENDERER. stdout is line-buffered and names each step as
+// it starts (context, environments, each program's compilation) and each scene's time as it ends,
+// so that a run stopped by a timeout shows where it was. --egl picks the EGL platform to try
+// first. --pragma adds "#pragma TEXT" to every fragment shader, after the default
+// "optionNV(unroll none)"; "--pragma none" drops the default. That pragma keeps NVIDIA's compiler
+// from unrolling the kernels' loops: on an H200 (driver 580.159.04) lights.frag then compiled in
+// 16 s and ibl.frag in 9 s, where without it lights.frag had not compiled after 52 s
+// (DEVELOPERS.md). Drivers ignore pragmas they do not know (GLSL 4.50, section 3.3).
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -46,7 +53,7 @@ namespace {
     std::fprintf(stderr,
                  "glint_gl: %s\n"
                  "usage: glint_gl [--size WxH] [--frames N] [--warmup N] [--scenes point,sun,area,ibl4,ibl8] [--compare]\n"
-                 "                [--no-images] [--env PATH.exr] [--out DIR]\n",
+                 "                [--no-images] [--env PATH.exr] [--out DIR] [--egl surfaceless|device|default] [--pragma TEXT]...\n",
                  problem.c_str());
     std::exit(2);
 }
@@ -58,6 +65,8 @@ struct settings {
     bool compare = false, images = true;
     std::string env = std::string(GLINT_DATA_DIR) + "/envmaps/sunset.exr";
     std::string out;
+    std::string egl = "surfaceless";
+    std::vector<std::string> pragmas{"optionNV(unroll none)"};
 };
 
 settings parse(int argc, char** argv) {
@@ -72,6 +81,15 @@ settings parse(int argc, char** argv) {
         else if (a == "--no-images") s.images = false;
         else if (a == "--env") s.env = value();
         else if (a == "--out") s.out = value();
+        else if (a == "--pragma") {
+            const std::string text = value();
+            if (text == "none") s.pragmas.clear();
+            else s.pragmas.push_back(text);
+        }
+        else if (a == "--egl") {
+            s.egl = value();
+            if (s.egl != "surfaceless" && s.egl != "device" && s.egl != "default") usage("unknown EGL platform '" + s.egl + "' (surfaceless, device, default)");
+        }
         else if (a == "--scenes") {
             s.scenes.clear();
             std::stringstream list(value());
@@ -114,9 +132,11 @@ constexpr glint::binomial_variant shader_variant = glint::binomial_variant::unbi
 
 // A program from a vertex and a fragment shader; the fragment shader gets the glint kernel files
 // (in glint::glsl_kernel_names() order) and common.glsl first, with the given #defines.
-GLuint program(const std::string& vertex, const std::string& fragment, bool ibl, bool gbuffer) {
+GLuint program(const std::string& vertex, const std::string& fragment, bool ibl, bool gbuffer, const std::vector<std::string>& pragmas) {
     const std::string version = "#version 450\n";
-    std::string fs = version + "#define GLINT_GL_IBL " + (ibl ? "1" : "0") + "\n#define GLINT_GL_GBUFFER " + (gbuffer ? "1" : "0") + "\n";
+    std::string fs = version;
+    for (const auto& text : pragmas) fs += "#pragma " + text + "\n";
+    fs += std::string("#define GLINT_GL_IBL ") + (ibl ? "1" : "0") + "\n#define GLINT_GL_GBUFFER " + (gbuffer ? "1" : "0") + "\n";
     // The one sampler glint_gl draws with (set_grid checks the grid's), known to the compiler.
     fs += "#define GLINT_BINOMIAL_VARIANT " + std::to_string(static_cast<int>(shader_variant)) + "\n#define GLINT_BINOMIAL_POW_METHOD " +
           std::to_string(static_cast<int>(glint::published_pow_method(shader_variant))) + "\n";
@@ -329,12 +349,25 @@ struct programs {
     GLuint surface[2][2] = {};  // [ibl][gbuffer]
 };
 
-programs make_programs(bool gbuffer) {
+double seconds_since(std::chrono::steady_clock::time_point t0) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+// Compiles and links every program, naming each before it starts and giving its time (a driver's
+// compiler can take long over the inlined kernels; the time is the driver's, not the frame's).
+programs make_programs(bool gbuffer, const std::vector<std::string>& pragmas) {
+    const auto build = [&](const char* vertex, const char* fragment, bool ibl, bool g) {
+        std::printf("glint_gl: compiling %s (%s%s)...\n", fragment, ibl ? "IBL" : "lights", g ? ", G-buffer" : "");
+        const auto t0 = std::chrono::steady_clock::now();
+        const GLuint p = program(vertex, fragment, ibl, g, pragmas);
+        std::printf("glint_gl: compiled in %.2f s\n", seconds_since(t0));
+        return p;
+    };
     programs p;
     for (int ibl = 0; ibl < 2; ++ibl) {
-        p.background[ibl] = program("fullscreen.vert", "background.frag", ibl != 0, false);
-        p.surface[ibl][0] = program("scene.vert", ibl ? "ibl.frag" : "lights.frag", ibl != 0, false);
-        if (gbuffer) p.surface[ibl][1] = program("scene.vert", ibl ? "ibl.frag" : "lights.frag", ibl != 0, true);
+        p.background[ibl] = build("fullscreen.vert", "background.frag", ibl != 0, false);
+        p.surface[ibl][0] = build("scene.vert", ibl ? "ibl.frag" : "lights.frag", ibl != 0, false);
+        if (gbuffer) p.surface[ibl][1] = build("scene.vert", ibl ? "ibl.frag" : "lights.frag", ibl != 0, true);
     }
     return p;
 }
@@ -461,8 +494,11 @@ double median(std::vector<double> v) {
 
 int main(int argc, char** argv) {
     const settings opt = parse(argc, argv);
+    std::setvbuf(stdout, nullptr, _IOLBF, 0);  // each step's line appears as it starts, also through a pipe
     try {
-        glint_gl::gl_context gl;
+        const auto start = std::chrono::steady_clock::now();
+        std::printf("glint_gl: creating the OpenGL context (EGL, %s platform first)...\n", opt.egl.c_str());
+        glint_gl::gl_context gl(opt.egl);
         const std::string device = glint_gl::gl_context::renderer();
         std::printf("glint_gl: %s, OpenGL %s, %dx%d, %d frames after %d warm-up\n", device.c_str(), glint_gl::gl_context::version().c_str(),
                     opt.width, opt.height, opt.frames, opt.warmup);
@@ -473,6 +509,7 @@ int main(int argc, char** argv) {
         std::unique_ptr<glint::environment> envs[9];
         gpu_environment genv[9];
         if (need[4] || need[8]) {
+            std::printf("glint_gl: [%.1f s] prefiltering %s on the CPU...\n", seconds_since(start), opt.env.c_str());
             const auto img = glint::io::read_exr(opt.env);
             for (const int K : {4, 8}) {
                 if (!need[K]) continue;
@@ -482,7 +519,8 @@ int main(int argc, char** argv) {
                 genv[K] = upload(*envs[K]);
             }
         }
-        const programs progs = make_programs(opt.compare);
+        const programs progs = make_programs(opt.compare, opt.pragmas);
+        std::printf("glint_gl: [%.1f s] drawing\n", seconds_since(start));
         const mesh m = make_mesh();
         const target t = make_target(opt.width, opt.height);
         GLuint empty_vao = 0, query = 0;

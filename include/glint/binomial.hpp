@@ -81,6 +81,20 @@
 // The overall mean is then N p^N + P(M) (1 + m) = N p up to those errors and the rounding of the
 // closed forms (about one ulp of N p). Measured figures: docs/binomial.md.
 //
+// Small N: exact by inversion. For 2 < N < 12 binomial_unbiased does not use steps 1 to 4: it
+// draws from L(N, p) = (1 - f) b(Na, p) N / Na + f b(Na + 1, p) N / (Na + 1), Na = floor(N),
+// f = N - Na (the two neighbouring binomials scaled onto [0, N], mixed by the fractional part),
+// by inverting its CDF with u1 alone: a walk over the support from the near end, without a
+// transcendental (kernels/binomial.glsl, glint_binomial_walk). At integer N that is b(N, p)
+// itself; for real N the mean is N p, P(n = 0) is the randomised-rounding binomial's, the values
+// stay in [0, N], and the variance is N^2 p (1 - p) ((1 - f) / Na + f / (Na + 1)), 0% to 4.2%
+// above N p (1 - p). The draw stays monotone in p, symmetric per sample and continuous in N, and
+// n = 0 wherever the near-end gate says so. From N = 12 to 16 the walk and steps 1 to 4 are
+// mixed with weights (16 - N) / 4 and (N - 12) / 4, chosen by u2 (the middle then reads u2
+// stretched back onto (0, 1)): a walk at p = 1/2 takes about N / 2 steps, the Gaussian middle a
+// constant time. At N = 3 to 10 the walk took the draws from 2.0x-2.6x KK25 Alg. 1's time to
+// 0.4x-1.4x (docs/binomial.md).
+//
 // Cost. binomial_dual_gated and binomial_unbiased evaluate a transcendental only where it can
 // change the result, and return bit for bit what the straight-line evaluation returns (for u1 a
 // normal number; tests/unit/test_binomial_shortcuts.cpp): for N > 2 and methods kk25 and log1p,

@@ -308,3 +308,58 @@ TEST_CASE("the mean-preserving sampler's law is symmetric: p -> 1 - p mirrors n 
             CHECK(worst <= 1e-9);
         }
 }
+
+TEST_CASE("the walk (2 < N < 16) is the exact binomial at integer N, and for real N its mean, P(0), range and variance are as documented") {
+    // Integer N below the blend (N < 12): the law is b(N, p) itself, so KS and W1 against the
+    // exact binomial are rounding, and the mean is exact to the series of c (below). Alg. 1's law
+    // at the same points is the check's own control: it must read as far off as it is.
+    double worst_ks = 0, alg1_worst_ks = 0;
+    for (double N : {3.0, 4.0, 5.0, 7.0, 10.0, 11.0})
+        for (double p : {1e-6, 0.01, 0.1, 0.3, 0.5, 0.7, 0.9, 0.999}) {
+            CAPTURE(N);
+            CAPTURE(p);
+            const auto d = distance(binomial_variant::unbiased, N, p);
+            CHECK(std::fabs(d.mean_bias) <= 1e-8);
+            CHECK(std::fabs(d.p0_error) <= 1e-8);
+            worst_ks = std::max(worst_ks, d.ks);
+            alg1_worst_ks = std::max(alg1_worst_ks, distance(binomial_variant::dual_gated, N, p).ks);
+        }
+    MESSAGE("walk: worst KS against the exact binomial " << worst_ks << "; Alg. 1's worst at the same points: " << alg1_worst_ks);
+    CHECK(worst_ks <= 1e-8);
+    CHECK(alg1_worst_ks >= 1e-2);
+    // Real N (and the blend from 12 on): the mean N p; P(0) the randomised-rounding binomial's
+    // where the walk alone draws; values in [0, N]; the variance N^2 p (1 - p) ((1 - f) / Na +
+    // f / (Na + 1)), within 4.2% above N p (1 - p).
+    for (double N : {2.25, 2.5, 3.5, 4.75, 7.2, 10.5, 11.9, 12.5, 14.0, 15.9})
+        for (double p : {1e-4, 0.03, 0.25, 0.5, 0.8, 0.99}) {
+            CAPTURE(N);
+            CAPTURE(p);
+            const auto m = gt::model_of(binomial_variant::unbiased, N, p, glint::pow_method::log1p);
+            CHECK(std::fabs(m.mean() / (N * p) - 1) <= (N < 12 ? 1e-8 : 1e-4));
+            for (const auto& a : m.atoms) {
+                CHECK(a.value >= 0);
+                CHECK(a.value <= N);
+            }
+            const double Na = std::floor(N), f = N - Na;
+            if (N < 12) {
+                const double p0 = (1 - f) * std::pow(1 - p, Na) + f * std::pow(1 - p, Na + 1);
+                CHECK(std::fabs(m.probability_zero() / p0 - 1) <= 1e-8);
+                const double var = N * N * p * (1 - p) * ((1 - f) / Na + f / (Na + 1));
+                CHECK(std::fabs(m.variance() / var - 1) <= 1e-8);
+                CHECK(var >= N * p * (1 - p));
+                CHECK(var <= 1.0417 * N * p * (1 - p));
+            }
+        }
+    // The kernel's pieces: c = 1 - (1 - p)^Na by its series below Na p = 1/4 (truncation below
+    // (Na p)^7 / 8! = 1.5e-9) and by squaring above (float's 2^-24 in 1 - p and up to 19 roundings
+    // in x^Na, 1.1e-6 relative, times (1 - c) / c <= 3.6 there: 4e-6), on both sides of the switch.
+    for (double N : {3.0, 5.0, 10.0, 15.0})
+        for (double x : {0.2, 0.2499, 0.25, 0.3}) {
+            const double p = x / std::floor(N);
+            const auto w = glint::detail::glsl::kernels<float>::glint_binomial_walk_start(static_cast<float>(N), static_cast<float>(p));
+            const double c = 1 - std::pow(1 - static_cast<double>(static_cast<float>(p)), std::floor(N));
+            CAPTURE(N);
+            CAPTURE(p);
+            CHECK(std::fabs(static_cast<double>(w.survival) / c - 1) <= 5e-6);
+        }
+}

@@ -3,7 +3,7 @@
 // bit for bit what the straight-line evaluation gives. The references below are that evaluation,
 // written out from the kernels' pieces: KK25 Alg. 1 as published (every gate and the quantile
 // always evaluated), and the mean-preserving sampler with its ends always computed and its middle
-// always set up (neither the busy nor the sure middle's shortcut). Inputs: the grid, more N and p,
+// always set up (neither the busy nor the sure middle's shortcut), or its walk for small N. Inputs: the grid, more N and p,
 // and u1 at 2 ulps either side of every gate threshold and every bound.
 // For u1 a normal number: the one difference, gate probabilities below the normal range taken
 // as 0, decides the same for every normal u1.
@@ -42,11 +42,13 @@ glint::binomial_result<real> dual_gated_reference(real N, real p, real u1, real 
     return pair(g.positive_fixed + g.gaussian * G, g.negative_fixed + g.gaussian * (N2 - G));
 }
 
-// The mean-preserving sampler with its ends always evaluated.
+// The mean-preserving sampler with its ends always evaluated (and for 2 < N < 16, where it draws
+// by the walk, the walk without the near-end gate).
 template <class real>
 glint::binomial_result<real> unbiased_reference(real N, real p, real u1, real u2, int method) {
     N = std::min(std::max(N, real(0)), K<real>::GLINT_BINOMIAL_MAX_N);
     p = std::min(std::max(p, real(0)), real(1));
+    if (K<real>::glint_binomial_walks(N, u2)) return K<real>::glint_binomial_walk(N, p, u1);
     const real N2 = std::max(real(2), N);
     const auto e = K<real>::glint_binomial_unbiased_ends_evaluated(N2, p, method);
     const auto g = K<real>::glint_binomial_dual_gates(N, p, u1, e.all_positive, e.all_negative);

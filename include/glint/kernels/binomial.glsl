@@ -1325,6 +1325,155 @@ GLINT_FN glint_binomial glint_binomial_unbiased_small(real N, real p, real u1) {
     return glint_binomial_pair(g.positive_fixed + g.gaussian, g.negative_fixed + g.gaussian);
 }
 
+// ---------------------------------------------------------------------------------------------
+// Small N: an exact draw by inversion (the walk). For 2 < N < GLINT_BINOMIAL_WALK_END the
+// mean-preserving sampler draws from
+//   L(N, p) = (1 - f) b(Na, p) N / Na + f b(Na + 1, p) N / (Na + 1),   Na = floor(N), f = N - Na,
+// the binomials of the two neighbouring integers, scaled onto [0, N], mixed with the fractional
+// part as weight. At integer N it is b(N, p) exactly. For real N its mean is N p, P(n = 0) is the
+// randomised-rounding binomial's, (1 - f) (1 - p)^Na + f (1 - p)^(Na + 1), its values lie in
+// [0, N] (the randomised-rounding binomial's reach ceil(N)), and its variance is
+// N^2 p (1 - p) ((1 - f) / Na + f / (Na + 1)), at most 4.2% above N p (1 - p) (at N = 2.5; 2.1%
+// at N = 3.5, 0.5% at N = 10.5, by Jensen's inequality never below). It is continuous in N,
+// and at N = 2 it is b(2, p), the exact gates' law below.
+// One uniform, u1, drives it: n is the largest support point x with P(n >= x) > u1 for
+// p <= 1/2 and, mirrored, N minus the walk at 1 - p with 1 - u1 for p > 1/2. So n is monotone in
+// p and decreasing in u1, P(n > 0) <= N p (the near-end gate's and the grid's skip test's bound
+// hold per draw), and (p, u1) -> (1 - p, 1 - u1) swaps the counts. The walk visits the support
+// points of both components in increasing order (they interleave: k N / (Na + 1) < k N / Na <
+// (k + 1) N / (Na + 1)), subtracting each point's mass from P(n > x), without a transcendental:
+// P(n > 0) = c + f p (1 - c), c = 1 - (1 - p)^Na, from c's series where Na p < 1/4 (no
+// cancellation; truncated after its seventh term, relative error below (Na p)^7 / 8! = 1.5e-9)
+// and from (1 - p)^Na by squaring above; the binomial masses by their ratio recurrence.
+// About N p_near + 1 iterations on average: `glint_frame_loop draw 10 0.5` counts 357
+// instructions a draw with its hashes against 594 for the Gaussian middle, `draw 5 0.5` 258
+// against 644 (callgrind); times against KK25 Alg. 1 in docs/binomial.md.
+// From N = GLINT_BINOMIAL_WALK_FULL to GLINT_BINOMIAL_WALK_END, where a walk grows long at
+// p near 1/2, the sampler blends into the Gaussian middle: it walks with probability
+// w = (WALK_END - N) / (WALK_END - WALK_FULL), chosen by |u2 - 1/2| < w / 2 (symmetric in u2 and
+// independent of p, so the monotonicity and the symmetry per draw stay), and otherwise draws
+// the Gaussian middle with u2 stretched back onto (0, 1). The law is then the mixture of the two
+// with weights w and 1 - w: continuous in N, with the mean N p of both.
+GLINT_CONST(real) GLINT_BINOMIAL_WALK_FULL = real(12);
+GLINT_CONST(real) GLINT_BINOMIAL_WALK_END = real(16);
+
+// The walk's state at support point 0 for 2 < N < 16 and q = p_near <= 1/2: the masses of
+// component Na (a0 = b(0; Na, q)) and Na + 1 (a1), and P(n > 0).
+struct glint_binomial_walk_state {
+    int Na;
+    real f;
+    real ratio;     // q / (1 - q)
+    real a0;        // b(k; Na, q) at the current k
+    real a1;        // b(k; Na + 1, q)
+    real survival;  // P(n > x) at the current support point x
+    real rescue;    // below this, survival is summed afresh from the masses beyond x
+};
+
+GLINT_FN glint_binomial_walk_state glint_binomial_walk_start(real N, real q) {
+    glint_binomial_walk_state w;
+    w.Na = int(N);
+    real Na = real(w.Na);
+    w.f = N - Na;
+    real x = real(1) - q;
+    w.ratio = q / x;
+    real c;  // 1 - (1 - q)^Na
+    if (Na * q < real(0.25)) {
+        c = real(1) - (Na - real(6)) * q * real(1.0 / 7.0);
+        c = real(1) - (Na - real(5)) * q * real(1.0 / 6.0) * c;
+        c = real(1) - (Na - real(4)) * q * real(0.2) * c;
+        c = real(1) - (Na - real(3)) * q * real(0.25) * c;
+        c = real(1) - (Na - real(2)) * q * real(1.0 / 3.0) * c;
+        c = real(1) - (Na - real(1)) * q * real(0.5) * c;
+        c = Na * q * c;
+    } else {
+        real power = real(1), square = x;  // x^Na by squaring, Na < 16
+        for (int bit = 0; bit < 4; ++bit) {
+            if (((w.Na >> bit) & 1) != 0) power *= square;
+            square *= square;
+        }
+        c = real(1) - power;
+    }
+    w.a0 = real(1) - c;
+    w.a1 = w.a0 * x;
+    w.survival = c + w.f * q * (real(1) - c);
+    w.rescue = w.survival * real(1.0 / 1024.0);
+    return w;
+}
+
+// P(n > k N / Na): the masses of the points beyond, summed afresh from the binomial masses at k
+// (a0 = b(k; Na, q), a1 = b(k; Na + 1, q)) outwards, where the running difference has lost them.
+GLINT_FN real glint_binomial_walk_tail(glint_binomial_walk_state w, int k) {
+    real a0 = w.a0, a1 = w.a1, sum = real(0);
+    for (int j = k + 1; j <= 16; ++j) {
+        if (j > w.Na + 1) break;
+        real t = w.ratio / real(j);
+        a1 *= real(w.Na + 2 - j) * t;
+        a0 *= real(w.Na + 1 - j) * t;  // 0 at j = Na + 1
+        sum += w.f * a1 + (real(1) - w.f) * a0;
+    }
+    return sum;
+}
+
+// Steps from support point k - 1 to the two points of index k, k N / (Na + 1) and k N / Na (the
+// masses f b(k; Na + 1, q) and (1 - f) b(k; Na, q)), and returns P(n > x) at each. A running
+// difference from P(n > 0) carries an absolute error of a few ulps of P(n > 0), which swamps the
+// far tail (and that tail is P(n = 0) for p > 1/2): where it falls below 2^-10 of its last fresh
+// value, it is summed afresh from the masses beyond (glint_binomial_walk_tail), which only draws
+// in that tail pay for. The survival at the first point is the second's plus its mass, a sum.
+GLINT_FN vec2 glint_binomial_walk_step(GLINT_INOUT(glint_binomial_walk_state) w, int k) {
+    real t = w.ratio / real(k);
+    w.a1 *= real(w.Na + 2 - k) * t;
+    w.a0 *= real(w.Na + 1 - k) * t;
+    real second_mass = (real(1) - w.f) * w.a0;
+    real after_second;
+    if (k == w.Na) {
+        after_second = real(0);  // k N / Na = N, the top
+        second_mass += w.f * w.a1 * w.ratio / real(w.Na + 1);  // and the top of component Na + 1
+    } else {
+        after_second = w.survival - w.f * w.a1 - second_mass;
+        if (after_second < w.rescue) {
+            after_second = glint_binomial_walk_tail(w, k);
+            w.rescue = after_second * real(1.0 / 1024.0);
+        }
+    }
+    w.survival = after_second;
+    return vec2(after_second + second_mass, after_second);
+}
+
+// The walk for p_near = q and v = u1 (or 1 - u1 mirrored): the count from the near end.
+GLINT_FN real glint_binomial_walk_near(real N, real q, real v) {
+    glint_binomial_walk_state w = glint_binomial_walk_start(N, q);
+    real value = real(0);
+    for (int k = 1; k < 16; ++k) {
+        if (!(w.survival > v) || k > w.Na) break;
+        vec2 after = glint_binomial_walk_step(w, k);
+        if (!(after.x > v)) {
+            value = real(k) * N / real(w.Na + 1);
+            break;
+        }
+        value = (k == w.Na) ? N : real(k) * N / real(w.Na);
+    }
+    return value;
+}
+
+// The walk's draw for 2 < N < GLINT_BINOMIAL_WALK_END (the caller clamps N and p).
+GLINT_FN glint_binomial glint_binomial_walk(real N, real p, real u1) {
+    bool lower = p <= real(0.5);
+    real n = glint_binomial_walk_near(N, lower ? p : real(1) - p, lower ? u1 : real(1) - u1);
+    return lower ? glint_binomial_pair(n, N - n) : glint_binomial_pair(N - n, n);
+}
+
+// Whether the draw walks (2 < N < GLINT_BINOMIAL_WALK_END, blended away from WALK_FULL on); where
+// it does not, u2 becomes the Gaussian middle's own uniform, stretched back onto (0, 1).
+GLINT_FN bool glint_binomial_walks(real N, GLINT_INOUT(real) u2) {
+    if (!(N > real(2) && N < GLINT_BINOMIAL_WALK_END)) return false;
+    real w = min((GLINT_BINOMIAL_WALK_END - N) * real(1.0 / 4.0), real(1));  // 1 / (WALK_END - WALK_FULL)
+    real d = u2 - real(0.5);
+    if (w >= real(1) || abs(d) < real(0.5) * w) return true;
+    u2 = real(0.5) + (d > real(0) ? d - real(0.5) * w : d + real(0.5) * w) / (real(1) - w);
+    return false;
+}
+
 // The busy middle, where most draws of large footprints fall: lambda = N p_near >= 17 (so
 // N >= 34, where the far bound is always clear), the clamp 6 sd or more below the mean
 // (glint_binomial_closed_fit's first case) and u1 in [1.03e-3, 1 - 1.03e-3]. There
@@ -1376,6 +1525,7 @@ GLINT_FN glint_binomial glint_binomial_unbiased(real N, real p, real u1, real u2
     p = clamp(p, real(0), real(1));
     if (glint_binomial_surely_near_end(N, p, u1, method)) return glint_binomial_near_end(N, p);
     if (N <= real(2)) return glint_binomial_unbiased_small(N, p, u1);
+    if (glint_binomial_walks(N, u2)) return glint_binomial_walk(N, p, u1);
     glint_binomial busy;
     if (glint_binomial_unbiased_busy(N, p, u1, u2, method, busy)) return busy;
     // Where u1 is surely above p^N and below 1 - (1 - p)^N, no gate fires, and where the middle's
@@ -1453,6 +1603,7 @@ GLINT_FN glint_binomial glint_binomial_unbiased_cached(real N, real p, real u1, 
     p = clamp(p, real(0), real(1));
     if (glint_binomial_surely_near_end(N, p, u1, method)) return glint_binomial_near_end(N, p);
     if (N <= real(2)) return glint_binomial_unbiased_small(N, p, u1);
+    if (glint_binomial_walks(N, u2)) return glint_binomial_walk(N, p, u1);
     if (!(cache.state > 0 && cache.N == N && cache.p == p)) {
         cache.N = N;
         cache.p = p;

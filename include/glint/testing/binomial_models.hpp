@@ -258,6 +258,29 @@ binomial_model model_of(binomial_variant variant, double N_in, double p_in, pow_
             break;
         }
     }
+    if (variant == binomial_variant::unbiased && Nr > real(2) && Nr < k::GLINT_BINOMIAL_WALK_END) {
+        // The walk (kernels/binomial.glsl, glint_binomial_walk) with weight w, the Gaussian middle
+        // above with 1 - w: its atoms are the support points, each with the mass by which the
+        // walk's P(n > x), computed in `real` as the kernel computes it, steps down there.
+        const double w = std::min(static_cast<double>((k::GLINT_BINOMIAL_WALK_END - Nr) * real(1.0 / 4.0)), 1.0);
+        for (auto& a : d.atoms) a.probability *= 1 - w;
+        for (auto& g : d.segments) g.scale *= 1 - w;
+        const bool lower = pr <= real(0.5);
+        auto st = k::glint_binomial_walk_start(Nr, lower ? pr : real(1) - pr);
+        auto place = [&](real x) { return lower ? static_cast<double>(x) : static_cast<double>(Nr - x); };
+        double above = std::min(std::max(static_cast<double>(st.survival), 0.0), 1.0);  // P(n > x), clamped as P(u1 < .)
+        d.atoms.push_back({place(real(0)), w * (1 - above)});
+        for (int j = 1; j <= st.Na; ++j) {
+            const auto after = k::glint_binomial_walk_step(st, j);
+            const real points[2] = {real(j) * Nr / real(st.Na + 1), j == st.Na ? Nr : real(j) * Nr / real(st.Na)};
+            const real survivals[2] = {after.x, after.y};
+            for (int i = 0; i < 2; ++i) {
+                const double next = std::min(std::max(static_cast<double>(survivals[i]), 0.0), above);
+                d.atoms.push_back({place(points[i]), w * (above - next)});
+                above = next;
+            }
+        }
+    }
     return d;
 }
 

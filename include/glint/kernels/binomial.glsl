@@ -1326,7 +1326,7 @@ GLINT_FN glint_binomial glint_binomial_unbiased_small(real N, real p, real u1) {
 }
 
 // ---------------------------------------------------------------------------------------------
-// Small N: an exact draw by inversion (the walk). For 2 < N < GLINT_BINOMIAL_WALK_END the
+// Small N: an exact draw by inversion (the walk). For 2 < N < GLINT_BINOMIAL_WALK_FULL the
 // mean-preserving sampler draws from
 //   L(N, p) = (1 - f) b(Na, p) N / Na + f b(Na + 1, p) N / (Na + 1),   Na = floor(N), f = N - Na,
 // the binomials of the two neighbouring integers, scaled onto [0, N], mixed with the fractional
@@ -1467,7 +1467,7 @@ GLINT_FN glint_binomial glint_binomial_walk(real N, real p, real u1) {
 // it does not, u2 becomes the Gaussian middle's own uniform, stretched back onto (0, 1).
 GLINT_FN bool glint_binomial_walks(real N, GLINT_INOUT(real) u2) {
     if (!(N > real(2) && N < GLINT_BINOMIAL_WALK_END)) return false;
-    real w = min((GLINT_BINOMIAL_WALK_END - N) * real(1.0 / 4.0), real(1));  // 1 / (WALK_END - WALK_FULL)
+    real w = min((GLINT_BINOMIAL_WALK_END - N) / (GLINT_BINOMIAL_WALK_END - GLINT_BINOMIAL_WALK_FULL), real(1));
     real d = u2 - real(0.5);
     if (w >= real(1) || abs(d) < real(0.5) * w) return true;
     u2 = real(0.5) + (d > real(0) ? d - real(0.5) * w : d + real(0.5) * w) / (real(1) - w);

@@ -1,7 +1,8 @@
 // A headless OpenGL 4.5 core context through EGL, for glint_gl: the surfaceless platform (Mesa,
 // and NVIDIA's driver), else the first EGL device (EGL_EXT_platform_device), else the default
-// display, starting from the platform named (a driver may offer one and fail in it); no window, no pbuffer (EGL_KHR_surfaceless_context), rendering into framebuffer
-// objects. GL functions are the exports of glvnd's libOpenGL.so.0 (GL_GLEXT_PROTOTYPES).
+// display, starting from the platform named (a driver may offer one and fail in it); no window,
+// no pbuffer (EGL_KHR_surfaceless_context), rendering into framebuffer objects. GL functions are
+// the exports of glvnd's libOpenGL.so.0 (GL_GLEXT_PROTOTYPES).
 #pragma once
 
 #define EGL_EGLEXT_PROTOTYPES
@@ -54,31 +55,30 @@ public:
 
 private:
     static EGLDisplay open_display(const std::string& first) {
-        EGLDisplay d = EGL_NO_DISPLAY;
-        if (first == "default") {
-            d = eglGetDisplay(EGL_DEFAULT_DISPLAY);
+        // The platforms in the order tried: the one named first, then surfaceless, device, default.
+        const std::string all[3] = {"surfaceless", "device", "default"};
+        std::string order[3] = {first, "", ""};
+        int n = 1;
+        for (const auto& name : all)
+            if (name != first) order[n++] = name;
+        for (const auto& name : order) {
+            const EGLDisplay d = platform_display(name);
             if (d != EGL_NO_DISPLAY && eglInitialize(d, nullptr, nullptr)) return d;
         }
-        if (first != "device") {
-            d = eglGetPlatformDisplay(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
-            if (d != EGL_NO_DISPLAY && eglInitialize(d, nullptr, nullptr)) return d;
-        }
-        const auto query_devices = reinterpret_cast<PFNEGLQUERYDEVICESEXTPROC>(eglGetProcAddress("eglQueryDevicesEXT"));
-        if (query_devices) {
-            EGLDeviceEXT device[4];
-            EGLint n = 0;
-            if (query_devices(4, device, &n) && n > 0) {
-                d = eglGetPlatformDisplay(EGL_PLATFORM_DEVICE_EXT, device[0], nullptr);
-                if (d != EGL_NO_DISPLAY && eglInitialize(d, nullptr, nullptr)) return d;
-            }
-        }
-        if (first == "device") {
-            d = eglGetPlatformDisplay(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
-            if (d != EGL_NO_DISPLAY && eglInitialize(d, nullptr, nullptr)) return d;
-        }
-        d = eglGetDisplay(EGL_DEFAULT_DISPLAY);
+        // The default display uninitialised: the constructor's eglInitialize reports the failure.
+        const EGLDisplay d = eglGetDisplay(EGL_DEFAULT_DISPLAY);
         if (d == EGL_NO_DISPLAY) throw std::runtime_error("glint_gl: no EGL display (surfaceless, device or default)");
         return d;
+    }
+
+    static EGLDisplay platform_display(const std::string& name) {
+        if (name == "surfaceless") return eglGetPlatformDisplay(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
+        if (name == "default") return eglGetDisplay(EGL_DEFAULT_DISPLAY);
+        const auto query_devices = reinterpret_cast<PFNEGLQUERYDEVICESEXTPROC>(eglGetProcAddress("eglQueryDevicesEXT"));
+        EGLDeviceEXT device[4];
+        EGLint n = 0;
+        if (!query_devices || !query_devices(4, device, &n) || n < 1) return EGL_NO_DISPLAY;
+        return eglGetPlatformDisplay(EGL_PLATFORM_DEVICE_EXT, device[0], nullptr);
     }
 
     EGLDisplay display_ = EGL_NO_DISPLAY;

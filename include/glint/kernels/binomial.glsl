@@ -1440,6 +1440,13 @@ GLINT_FN vec2 glint_binomial_walk_step(GLINT_INOUT(glint_binomial_walk_state) w,
     return vec2(after_second + second_mass, after_second);
 }
 
+// The support points of index k: k N / (Na + 1) (first) and k N / Na (second; N itself at
+// k = Na).
+GLINT_FN real glint_binomial_walk_point(real N, int Na, int k, bool second) {
+    if (!second) return real(k) * N / real(Na + 1);
+    return (k == Na) ? N : real(k) * N / real(Na);
+}
+
 // The walk for p_near = q and v = u1 (or 1 - u1 mirrored): the count from the near end.
 GLINT_FN real glint_binomial_walk_near(real N, real q, real v) {
     glint_binomial_walk_state w = glint_binomial_walk_start(N, q);
@@ -1447,11 +1454,9 @@ GLINT_FN real glint_binomial_walk_near(real N, real q, real v) {
     for (int k = 1; k < 16; ++k) {
         if (!(w.survival > v) || k > w.Na) break;
         vec2 after = glint_binomial_walk_step(w, k);
-        if (!(after.x > v)) {
-            value = real(k) * N / real(w.Na + 1);
-            break;
-        }
-        value = (k == w.Na) ? N : real(k) * N / real(w.Na);
+        bool stops_at_first = !(after.x > v);
+        value = glint_binomial_walk_point(N, w.Na, k, !stops_at_first);
+        if (stops_at_first) break;
     }
     return value;
 }

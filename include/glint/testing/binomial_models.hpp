@@ -272,7 +272,7 @@ binomial_model model_of(binomial_variant variant, double N_in, double p_in, pow_
         d.atoms.push_back({place(real(0)), w * (1 - above)});
         for (int j = 1; j <= st.Na; ++j) {
             const auto after = k::glint_binomial_walk_step(st, j);
-            const real points[2] = {real(j) * Nr / real(st.Na + 1), j == st.Na ? Nr : real(j) * Nr / real(st.Na)};
+            const real points[2] = {k::glint_binomial_walk_point(Nr, st.Na, j, false), k::glint_binomial_walk_point(Nr, st.Na, j, true)};
             const real survivals[2] = {after.x, after.y};
             for (int i = 0; i < 2; ++i) {
                 const double next = std::min(std::max(static_cast<double>(survivals[i]), 0.0), above);

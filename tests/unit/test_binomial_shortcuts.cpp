@@ -3,8 +3,9 @@
 // bit for bit what the straight-line evaluation gives. The references below are that evaluation,
 // written out from the kernels' pieces: KK25 Alg. 1 as published (every gate and the quantile
 // always evaluated), and the mean-preserving sampler with its ends always computed and its middle
-// always set up (neither the busy nor the sure middle's shortcut), or its walk for small N. Inputs: the grid, more N and p,
-// and u1 at 2 ulps either side of every gate threshold and every bound.
+// always set up (neither the busy nor the sure middle's shortcut), or its walk for small N.
+// Inputs: the grid, more N and p, and u1 at 2 ulps either side of every gate threshold and every
+// bound.
 // For u1 a normal number: the one difference, gate probabilities below the normal range taken
 // as 0, decides the same for every normal u1.
 #include <doctest/doctest.h>

@@ -1400,16 +1400,22 @@ GLINT_FN glint_binomial_walk_state glint_binomial_walk_start(real N, real q) {
     return w;
 }
 
+// The binomial masses at k from those at k - 1 (a0 = b(k; Na, q), a1 = b(k; Na + 1, q)), by their
+// ratio recurrence: a0 becomes 0 at k = Na + 1.
+GLINT_FN void glint_binomial_walk_advance(GLINT_INOUT(glint_binomial_walk_state) w, int k) {
+    real t = w.ratio / real(k);
+    w.a1 *= real(w.Na + 2 - k) * t;
+    w.a0 *= real(w.Na + 1 - k) * t;
+}
+
 // P(n > k N / Na): the masses of the points beyond, summed afresh from the binomial masses at k
 // (a0 = b(k; Na, q), a1 = b(k; Na + 1, q)) outwards, where the running difference has lost them.
 GLINT_FN real glint_binomial_walk_tail(glint_binomial_walk_state w, int k) {
-    real a0 = w.a0, a1 = w.a1, sum = real(0);
+    real sum = real(0);  // w is this function's copy
     for (int j = k + 1; j <= 16; ++j) {
         if (j > w.Na + 1) break;
-        real t = w.ratio / real(j);
-        a1 *= real(w.Na + 2 - j) * t;
-        a0 *= real(w.Na + 1 - j) * t;  // 0 at j = Na + 1
-        sum += w.f * a1 + (real(1) - w.f) * a0;
+        glint_binomial_walk_advance(w, j);
+        sum += w.f * w.a1 + (real(1) - w.f) * w.a0;
     }
     return sum;
 }
@@ -1421,9 +1427,7 @@ GLINT_FN real glint_binomial_walk_tail(glint_binomial_walk_state w, int k) {
 // value, it is summed afresh from the masses beyond (glint_binomial_walk_tail), which only draws
 // in that tail pay for. The survival at the first point is the second's plus its mass, a sum.
 GLINT_FN vec2 glint_binomial_walk_step(GLINT_INOUT(glint_binomial_walk_state) w, int k) {
-    real t = w.ratio / real(k);
-    w.a1 *= real(w.Na + 2 - k) * t;
-    w.a0 *= real(w.Na + 1 - k) * t;
+    glint_binomial_walk_advance(w, k);
     real second_mass = (real(1) - w.f) * w.a0;
     real after_second;
     if (k == w.Na) {
@@ -1470,9 +1474,14 @@ GLINT_FN glint_binomial glint_binomial_walk(real N, real p, real u1) {
 
 // Whether the draw walks (2 < N < GLINT_BINOMIAL_WALK_END, blended away from WALK_FULL on); where
 // it does not, u2 becomes the Gaussian middle's own uniform, stretched back onto (0, 1).
+// The walk's share of the draws at N: 1 below WALK_FULL, falling to 0 at WALK_END (for N > 2).
+GLINT_FN real glint_binomial_walk_weight(real N) {
+    return min((GLINT_BINOMIAL_WALK_END - N) / (GLINT_BINOMIAL_WALK_END - GLINT_BINOMIAL_WALK_FULL), real(1));
+}
+
 GLINT_FN bool glint_binomial_walks(real N, GLINT_INOUT(real) u2) {
     if (!(N > real(2) && N < GLINT_BINOMIAL_WALK_END)) return false;
-    real w = min((GLINT_BINOMIAL_WALK_END - N) / (GLINT_BINOMIAL_WALK_END - GLINT_BINOMIAL_WALK_FULL), real(1));
+    real w = glint_binomial_walk_weight(N);
     real d = u2 - real(0.5);
     if (w >= real(1) || abs(d) < real(0.5) * w) return true;
     u2 = real(0.5) + (d > real(0) ? d - real(0.5) * w : d + real(0.5) * w) / (real(1) - w);

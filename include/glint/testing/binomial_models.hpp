@@ -262,7 +262,7 @@ binomial_model model_of(binomial_variant variant, double N_in, double p_in, pow_
         // The walk (kernels/binomial.glsl, glint_binomial_walk) with weight w, the Gaussian middle
         // above with 1 - w: its atoms are the support points, each with the mass by which the
         // walk's P(n > x), computed in `real` as the kernel computes it, steps down there.
-        const double w = std::min(static_cast<double>((k::GLINT_BINOMIAL_WALK_END - Nr) / (k::GLINT_BINOMIAL_WALK_END - k::GLINT_BINOMIAL_WALK_FULL)), 1.0);
+        const double w = static_cast<double>(k::glint_binomial_walk_weight(Nr));
         for (auto& a : d.atoms) a.probability *= 1 - w;
         for (auto& g : d.segments) g.scale *= 1 - w;
         const bool lower = pr <= real(0.5);

@@ -14,11 +14,13 @@
 // to DIR/glint_gl.md; the device is GL_RENDERER. stdout is line-buffered and names each step as
 // it starts (context, environments, each program's compilation) and each scene's time as it ends,
 // so that a run stopped by a timeout shows where it was. --egl picks the EGL platform to try
-// first. --pragma adds "#pragma TEXT" to every fragment shader, after the default
-// "optionNV(unroll none)"; "--pragma none" drops the default. That pragma keeps NVIDIA's compiler
-// from unrolling the kernels' loops: on an H200 (driver 580.159.04) lights.frag then compiled in
-// 16 s and ibl.frag in 9 s, where without it lights.frag had not compiled after 52 s
-// (DEVELOPERS.md). Drivers ignore pragmas they do not know (GLSL 4.50, section 3.3).
+// first. --pragma adds "#pragma TEXT" to every fragment shader ("--pragma none" drops those given
+// before it). On an H200 (driver 580.159.04, docs/gpu.md) NVIDIA's compiler, unrolling the
+// kernels' loops as it does by default, took 68 s over lights.frag and 35 s over ibl.frag (its
+// disk cache makes a second run's compilation instant); --pragma 'optionNV(unroll none)' cut that
+// to 14 s and 9 s, but the IBL glint frames then took 1.8x to 1.9x as long (960x540, K = 4: 369 ms
+// against 209; K = 8: 528 against 283), so it is not the default. Drivers ignore pragmas they do
+// not know (GLSL 4.50, section 3.3).
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -66,7 +68,7 @@ struct settings {
     std::string env = std::string(GLINT_DATA_DIR) + "/envmaps/sunset.exr";
     std::string out;
     std::string egl = "surfaceless";
-    std::vector<std::string> pragmas{"optionNV(unroll none)"};
+    std::vector<std::string> pragmas;
 };
 
 settings parse(int argc, char** argv) {
@@ -353,9 +355,10 @@ double seconds_since(std::chrono::steady_clock::time_point t0) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
-// Compiles and links every program, naming each before it starts and giving its time (a driver's
-// compiler can take long over the inlined kernels; the time is the driver's, not the frame's).
-programs make_programs(bool gbuffer, const std::vector<std::string>& pragmas) {
+// Compiles and links the programs of the lights scenes and / or the IBL scenes, naming each before
+// it starts and giving its time (a driver's compiler can take long over the inlined kernels; the
+// time is the driver's, not the frame's).
+programs make_programs(bool lights, bool ibl_scenes, bool gbuffer, const std::vector<std::string>& pragmas) {
     const auto build = [&](const char* vertex, const char* fragment, bool ibl, bool g) {
         std::printf("glint_gl: compiling %s (%s%s)...\n", fragment, ibl ? "IBL" : "lights", g ? ", G-buffer" : "");
         const auto t0 = std::chrono::steady_clock::now();
@@ -365,6 +368,7 @@ programs make_programs(bool gbuffer, const std::vector<std::string>& pragmas) {
     };
     programs p;
     for (int ibl = 0; ibl < 2; ++ibl) {
+        if (!(ibl ? ibl_scenes : lights)) continue;
         p.background[ibl] = build("fullscreen.vert", "background.frag", ibl != 0, false);
         p.surface[ibl][0] = build("scene.vert", ibl ? "ibl.frag" : "lights.frag", ibl != 0, false);
         if (gbuffer) p.surface[ibl][1] = build("scene.vert", ibl ? "ibl.frag" : "lights.frag", ibl != 0, true);
@@ -519,7 +523,8 @@ int main(int argc, char** argv) {
                 genv[K] = upload(*envs[K]);
             }
         }
-        const programs progs = make_programs(opt.compare, opt.pragmas);
+        const bool lights = std::any_of(opt.scenes.begin(), opt.scenes.end(), [](const std::string& n) { return n != "ibl4" && n != "ibl8"; });
+        const programs progs = make_programs(lights, need[4] || need[8], opt.compare, opt.pragmas);
         std::printf("glint_gl: [%.1f s] drawing\n", seconds_since(start));
         const mesh m = make_mesh();
         const target t = make_target(opt.width, opt.height);

@@ -104,12 +104,20 @@ void check_identical(const char* precision) {
     for (double extra : {0.25, 0.4999, 0.5001, 1e-7, 3e-8, 2.8e-4, 0.75, 1 - 1e-4, 0.15, 0.262, 0.4015, 0.405, 0.595, 8.5 / 21, 88.0 / 180,
                          709.0 / 1418, 88.0 / 1e5, 709.0 / 1e5, 90.0 / 1e18})
         ps.push_back(extra);
-    const real u2s[] = {real(0x1p-24), real(0.0137), real(0.5), real(0.77), real(1) - real(0x1p-24)};
     long checked = 0, differ = 0;
     for (int method = 0; method <= 2; ++method)
         for (double nd : ns)
             for (double pd : ps) {
                 const real N = static_cast<real>(nd), p = static_cast<real>(pd);
+                // u2: fixed values, and 2 ulps around the sure middle's clamped-mass bound on
+                // u_near (u2, or 1 - u2 for p > 1/2).
+                std::vector<real> u2s = {real(0x1p-24), real(0.0137), real(0.5), real(0.77), real(1) - real(0x1p-24)};
+                const real bound = K<real>::glint_binomial_clamped_mass_bound(N * std::min(p, real(1) - p));
+                if (bound > 0 && bound < 1)
+                    for (real t : {bound, real(1) - bound}) {
+                        real below = std::nextafter(std::nextafter(t, real(0)), real(0)), above = std::nextafter(std::nextafter(t, real(1)), real(1));
+                        u2s.insert(u2s.end(), {below, t, above});
+                    }
                 for (real u1 : u1_values(N, p, method))
                     for (real u2 : u2s) {
                         const auto a = K<real>::glint_binomial_dual_gated(N, p, u1, u2, method);
@@ -142,6 +150,47 @@ void check_identical(const char* precision) {
 TEST_CASE("the samplers' shortcuts give exactly the straight-line result (float and double)") {
     check_identical<float>("float");
     check_identical<double>("double");
+}
+
+// glint_binomial_clamped_mass_bound's claims, over the region where the sure middle reads it (its
+// parameters need no ends, N >= 4): the fitted middle's clamped share Phi(-t) >= exp(-0.9253 lambda),
+// and at u_near = the bound the count is the clamp's (1 for p <= 1/2; N - 1 mirrored, N <= 4096)
+// with sigma (t + z) <= -0.006 to spare; so is it below (the quantile is monotone). A bound with
+// 0.90 for 0.94 fails both.
+template <class real>
+void check_clamped_mass_bound(const char* precision) {
+    double worst_decay = 0, worst_margin = -1e30;
+    long points = 0, taken = 0;
+    for (double nd = 4; nd < 1e16; nd *= 1.02)
+        for (double lambda = 1.0 / 1024; lambda < 3.5; lambda *= 1.01) {
+            const real N = static_cast<real>(nd), p_near = static_cast<real>(lambda / nd);
+            if (!(p_near <= real(0.5)) || !K<real>::glint_binomial_middle_needs_no_ends(N, p_near)) continue;
+            const auto f = K<real>::glint_binomial_middle_fit(N, p_near);  // (t, sigma, sigma t)
+            const double share = 0.5 * std::erfc(static_cast<double>(f.x) / std::sqrt(2.0));
+            if (N >= real(12)) worst_decay = std::max(worst_decay, -std::log(share) / lambda);
+            ++points;
+            const real bound = K<real>::glint_binomial_clamped_mass_bound(N * p_near);
+            if (!(bound > 0)) continue;
+            ++taken;
+            const real z = K<real>::glint_normal_quantile(bound);
+            worst_margin = std::max(worst_margin, static_cast<double>(f.y) * (static_cast<double>(f.x) + static_cast<double>(z)));
+            // The counts the sure middle would draw at u_near = bound, both sides.
+            const auto lower = K<real>::glint_binomial_gaussian_count(real(1) + f.z, f.y, true, bound, N);
+            CHECK(lower == real(1));
+            if (N <= K<real>::GLINT_BINOMIAL_CLAMPED_MIRROR_N_MAX) {
+                const auto upper = K<real>::glint_binomial_gaussian_count((N - real(1)) - f.z, f.y, false, real(1) - bound, N);
+                CHECK(upper == N - real(1));
+            }
+        }
+    MESSAGE(std::string(precision) << ": " << points << " points, the bound positive at " << taken << "; largest -log(Phi(-t)) / lambda " << worst_decay
+                      << ", largest sigma (t + z) at the bound " << worst_margin);
+    CHECK(worst_decay <= 0.9253);
+    CHECK(worst_margin <= -0.006);
+}
+
+TEST_CASE("the sure middle's clamped-mass bound lies below the clamped share, with room for rounding (float and double)") {
+    check_clamped_mass_bound<float>("float");
+    check_clamped_mass_bound<double>("double");
 }
 
 TEST_CASE("the shortcuts are taken where they should be") {

@@ -1515,6 +1515,25 @@ GLINT_FN bool glint_binomial_unbiased_busy(real N, real p, real u1, real u2, int
     return true;
 }
 
+// A lower bound on Phi(-t), the share of the middle's clamped Gaussian that the clamp takes to
+// the near count 1 (N - 1 mirrored), where the middle's parameters need no ends
+// (glint_binomial_middle_needs_no_ends), from lambda = N p_near alone. The fitted t there gives
+// Phi(-t) >= exp(-0.9253 lambda) from N = 12 on, where the sure middle begins (the largest
+// -log(Phi(-t)) / lambda, 0.9252, is at lambda = 2^-7, where the band begins; swept over N from 4
+// to 1e16 and lambda from 2^-10 to 3.5 by tests/unit/test_binomial_shortcuts.cpp), and the bound
+// is exp(-0.94 lambda) by its Taylor polynomial of degree 5, which lies below it for lambda >= 0
+// (the alternating series stopped after a negative term). At u_near equal to the bound, sigma
+// (t + z) is at most -0.0094 (z the quantile; the same sweep, from N = 4 on), so the clamp fires in
+// float too, with room for its roundings: near 1 (lower) for every N, near N - 1 (mirrored) while
+// the ulp of N is at most 2^-12 (N up to 4096). It takes the clamp's count for 0.910 of the
+// middle's draws at lambda = 0.1 (of the 0.916 that the clamp takes), 0.990 at 0.01 (of 0.991),
+// 0.390 at 1 (of 0.472), none from lambda = 2.32 on (the bound is negative there).
+GLINT_CONST(real) GLINT_BINOMIAL_CLAMPED_MIRROR_N_MAX = real(4096);
+GLINT_FN real glint_binomial_clamped_mass_bound(real lambda) {
+    real x = real(0.94) * lambda;
+    return real(1) - x * (real(1) - x * (real(0.5) - x * (real(1.0 / 6.0) - x * (real(1.0 / 24.0) - x * real(1.0 / 120.0)))));
+}
+
 // The sure middle whose parameters need no ends (glint_binomial_unbiased's surely_middle): the
 // general path's arithmetic without its gates, ends and setup structs, for the same result
 // (tests/unit/test_binomial_shortcuts.cpp). There N >= 4, so the middle is the clamped Gaussian
@@ -1524,6 +1543,13 @@ GLINT_FN bool glint_binomial_unbiased_busy(real N, real p, real u1, real u2, int
 // the table read and the band's polynomials once (see glint_binomial_unbiased).
 GLINT_FN glint_binomial glint_binomial_unbiased_sure_middle(real N, real p, real u2) {
     bool lower = p <= real(0.5);
+    // Where u2 surely lies in the clamped Gaussian's mass at the near end, the count is the clamp's
+    // bound, without the fit or the quantile (glint_binomial_clamped_mass_bound).
+    if ((lower || N <= GLINT_BINOMIAL_CLAMPED_MIRROR_N_MAX) &&
+        (lower ? u2 : real(1) - u2) <= glint_binomial_clamped_mass_bound(N * (lower ? p : real(1) - p))) {
+        real G = lower ? real(1) : N - real(1);
+        return glint_binomial_pair(G, N - G);
+    }
     vec3 f = glint_binomial_middle_fit(N, lower ? p : real(1) - p);
     real G = glint_binomial_gaussian_count(lower ? real(1) + f.z : (N - real(1)) - f.z, f.y, lower, u2, N);
     return glint_binomial_pair(G, N - G);

@@ -76,6 +76,10 @@ std::vector<real> u1_values(real N, real p, int method) {
     thresholds.insert(thresholds.end(), {e.all_positive, real(1) - e.all_negative});
     // The busy middle's bounds on u1 (glint_binomial_unbiased_busy).
     thresholds.insert(thresholds.end(), {real(1.03e-3), real(1) - real(1.03e-3)});
+    // Halfway into the middle's gate, 1 - (1 - q)^N (mirrored for p > 1/2): with u2 at the
+    // clamped-mass bound below, the sure middle's shortcut at its edge.
+    const real mid = real(0.5) * (real(1) - std::pow(real(1) - q, N2));
+    thresholds.push_back(p <= real(0.5) ? mid : real(1) - mid);
     std::vector<real> us = {real(1), real(0x1p-24), real(1) - real(0x1p-24), real(0.5)};
     for (real t : thresholds) {
         // u1 is a normal number: the shortcuts take subnormal gate probabilities as 0, which
@@ -191,6 +195,14 @@ void check_clamped_mass_bound(const char* precision) {
 TEST_CASE("the sure middle's clamped-mass bound lies below the clamped share, with room for rounding (float and double)") {
     check_clamped_mass_bound<float>("float");
     check_clamped_mass_bound<double>("double");
+    // Not below N p_near = 2^-7, where the far bound's table (N < 32) keeps the clamped share near
+    // 1 - 1e-5 while the bound tends to 1, nor mirrored above N = 4096. (The sure middle never
+    // draws below N p_near = 1e-3, where its bounds on u1 leave no room; the cached sampler, when it
+    // took the shortcut without this limit, differed from the uncached one at N = 30, p = 1e-8.)
+    CHECK(K<float>::glint_binomial_surely_clamped(30.0f, 0.01f, 0.5f));
+    CHECK_FALSE(K<float>::glint_binomial_surely_clamped(30.0f, 1e-8f, 0.5f));
+    CHECK(K<float>::glint_binomial_surely_clamped(4096.0f, 1 - 1e-4f, 0.5f));
+    CHECK_FALSE(K<float>::glint_binomial_surely_clamped(8192.0f, 1 - 1e-4f, 0.5f));
 }
 
 TEST_CASE("the shortcuts are taken where they should be") {
@@ -220,9 +232,21 @@ TEST_CASE("the mean-preserving sampler with a cache gives exactly the uncached r
             for (std::size_t a = 0; a < (order == 0 ? ns.size() : ps.size()); ++a)
                 for (std::size_t b = 0; b < (order == 0 ? ps.size() : ns.size()); ++b) {
                     const float N = static_cast<float>(order == 0 ? ns[a] : ns[b]), p = static_cast<float>(order == 0 ? ps[b] : ps[a]);
-                    for (int run = 0; run < 3; ++run, ++draw) {
+                    // Runs 3 and 4: the middle's gate, and u2 at the clamped-mass bound on u_near and 2
+                    // ulps past it.
+                    const float bound = K<float>::glint_binomial_clamped_mass_bound(N * std::min(p, 1 - p));
+                    const bool edge = bound > 0 && bound < 1;
+                    for (int run = 0; run < (edge ? 5 : 3); ++run, ++draw) {
                         const glm::uvec3 h = glint::pcg3d(glm::uvec3(draw, static_cast<std::uint32_t>(method), 11u));
-                        const float u1 = glint::open_unit_from_bits<float>(h.x), u2 = glint::open_unit_from_bits<float>(h.y);
+                        float u1 = glint::open_unit_from_bits<float>(h.x);
+                        float u2 = glint::open_unit_from_bits<float>(h.y);
+                        if (run >= 3) {
+                            // u1 halfway into the middle's gate, 1 - (1 - q)^N.
+                            const float q = std::min(p, 1 - p), mid = 0.5f * (1 - std::pow(1 - q, N));
+                            u1 = p <= 0.5f ? mid : 1 - mid;
+                            u2 = p <= 0.5f ? bound : 1 - bound;
+                            if (run == 4) u2 = std::nextafter(std::nextafter(u2, p <= 0.5f ? 1.0f : 0.0f), p <= 0.5f ? 1.0f : 0.0f);
+                        }
                         const bool warm = cache.state == 2 && cache.N == N && cache.p == p;
                         const auto c = K<float>::glint_binomial_unbiased_cached(N, p, u1, u2, method, cache);
                         const auto d = K<float>::glint_binomial_unbiased(N, p, u1, u2, method);

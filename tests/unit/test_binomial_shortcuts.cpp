@@ -1,5 +1,6 @@
 // The samplers' shortcuts (kernels/binomial.glsl: the near-end gate, the dual-gated middle, the
-// underflowed ends) skip transcendentals where the result is already decided. They must give
+// underflowed ends, the sure middle's clamped count) skip transcendentals where the result is
+// already decided. They must give
 // bit for bit what the straight-line evaluation gives. The references below are that evaluation,
 // written out from the kernels' pieces: KK25 Alg. 1 as published (every gate and the quantile
 // always evaluated), and the mean-preserving sampler with its ends always computed and its middle

@@ -71,6 +71,9 @@ struct settings {
     std::vector<std::string> pragmas;
 };
 
+// The IBL scenes (ibl4, ibl8); the others are the lights scene's.
+bool is_ibl_scene(const std::string& name) { return name == "ibl4" || name == "ibl8"; }
+
 settings parse(int argc, char** argv) {
     settings s;
     for (int i = 1; i < argc; ++i) {
@@ -506,10 +509,13 @@ int main(int argc, char** argv) {
         const std::string device = glint_gl::gl_context::renderer();
         std::printf("glint_gl: %s, OpenGL %s, %dx%d, %d frames after %d warm-up\n", device.c_str(), glint_gl::gl_context::version().c_str(),
                     opt.width, opt.height, opt.frames, opt.warmup);
-        // Environments for the IBL scenes (prefiltered on the CPU once per K).
-        bool need[9] = {};
-        for (const auto& n : opt.scenes)
-            if (n == "ibl4" || n == "ibl8") need[n == "ibl4" ? 4 : 8] = true;
+        // Environments for the IBL scenes (prefiltered on the CPU once per K); whether any scene is
+        // the lights scene's.
+        bool need[9] = {}, lights = false;
+        for (const auto& n : opt.scenes) {
+            if (is_ibl_scene(n)) need[n == "ibl4" ? 4 : 8] = true;
+            else lights = true;
+        }
         std::unique_ptr<glint::environment> envs[9];
         gpu_environment genv[9];
         if (need[4] || need[8]) {
@@ -523,7 +529,6 @@ int main(int argc, char** argv) {
                 genv[K] = upload(*envs[K]);
             }
         }
-        const bool lights = std::any_of(opt.scenes.begin(), opt.scenes.end(), [](const std::string& n) { return n != "ibl4" && n != "ibl8"; });
         const programs progs = make_programs(lights, need[4] || need[8], opt.compare, opt.pragmas);
         std::printf("glint_gl: [%.1f s] drawing\n", seconds_since(start));
         const mesh m = make_mesh();
@@ -536,7 +541,7 @@ int main(int argc, char** argv) {
         for (const auto& n : opt.scenes)
             for (const bool smooth : {true, false}) {
                 scene s;
-                s.name = n, s.smooth = smooth, s.ibl = n == "ibl4" || n == "ibl8", s.K = n == "ibl8" ? 8 : 4;
+                s.name = n, s.smooth = smooth, s.ibl = is_ibl_scene(n), s.K = n == "ibl8" ? 8 : 4;
                 s.light = n == "sun" ? light_type::sun : n == "area" ? light_type::area : light_type::point;
                 scenes.push_back(s);
             }

@@ -60,6 +60,13 @@ glint::binomial_result<real> unbiased_reference(real N, real p, real u1, real u2
     return pair(g.positive_fixed + g.gaussian * G, g.negative_fixed + g.gaussian * (N2 - G));
 }
 
+// Halfway into the middle's gate, 1 - (1 - q)^n with q = min(p, 1 - p), mirrored for p > 1/2.
+template <class real>
+real middle_gate_midpoint(real n, real p) {
+    const real q = std::min(p, real(1) - p), mid = real(0.5) * (real(1) - std::pow(real(1) - q, n));
+    return p <= real(0.5) ? mid : real(1) - mid;
+}
+
 // u1 values: hashed, the extremes, and 2 ulps around every threshold the gates or bounds use.
 template <class real>
 std::vector<real> u1_values(real N, real p, int method) {
@@ -77,10 +84,9 @@ std::vector<real> u1_values(real N, real p, int method) {
     thresholds.insert(thresholds.end(), {e.all_positive, real(1) - e.all_negative});
     // The busy middle's bounds on u1 (glint_binomial_unbiased_busy).
     thresholds.insert(thresholds.end(), {real(1.03e-3), real(1) - real(1.03e-3)});
-    // Halfway into the middle's gate, 1 - (1 - q)^N (mirrored for p > 1/2): with u2 at the
-    // clamped-mass bound below, the sure middle's shortcut at its edge.
-    const real mid = real(0.5) * (real(1) - std::pow(real(1) - q, N2));
-    thresholds.push_back(p <= real(0.5) ? mid : real(1) - mid);
+    // Halfway into the middle's gate: with u2 at the clamped-mass bound below, the sure middle's
+    // shortcut at its edge.
+    thresholds.push_back(middle_gate_midpoint(N2, p));
     std::vector<real> us = {real(1), real(0x1p-24), real(1) - real(0x1p-24), real(0.5)};
     for (real t : thresholds) {
         // u1 is a normal number: the shortcuts take subnormal gate probabilities as 0, which
@@ -242,9 +248,7 @@ TEST_CASE("the mean-preserving sampler with a cache gives exactly the uncached r
                         float u1 = glint::open_unit_from_bits<float>(h.x);
                         float u2 = glint::open_unit_from_bits<float>(h.y);
                         if (run >= 3) {
-                            // u1 halfway into the middle's gate, 1 - (1 - q)^N.
-                            const float q = std::min(p, 1 - p), mid = 0.5f * (1 - std::pow(1 - q, N));
-                            u1 = p <= 0.5f ? mid : 1 - mid;
+                            u1 = middle_gate_midpoint(N, p);
                             u2 = p <= 0.5f ? bound : 1 - bound;
                             if (run == 4) u2 = std::nextafter(std::nextafter(u2, p <= 0.5f ? 1.0f : 0.0f), p <= 0.5f ? 1.0f : 0.0f);
                         }

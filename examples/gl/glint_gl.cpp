@@ -6,14 +6,17 @@
 // the CPU: the same shading replayed in C++ from the frame's G-buffer (the same inputs), and the
 // CPU ray tracer of examples/lights.cpp and examples/ibl.cpp (its own geometry and footprints).
 //
-//   glint_gl [--size WxH] [--frames N] [--warmup N] [--scenes LIST] [--compare] [--no-images]
-//            [--env PATH.exr] [--out DIR] [--egl surfaceless|device|default] [--pragma TEXT]...
+//   glint_gl [--size WxH] [--frames N] [--warmup N] [--scenes LIST] [--deferred] [--compare]
+//            [--no-images] [--env PATH.exr] [--out DIR] [--egl surfaceless|device|default] [--pragma TEXT]...
 //
 // Scenes: point, sun, area (the lights scene), ibl4, ibl8 (K = 4, 8), each with glints and with
 // the smooth BRDF; LIST is comma-separated (default: all). Timings go to stdout and, with --out,
 // to DIR/glint_gl.md; the device is GL_RENDERER. stdout is line-buffered and names each step as
 // it starts (context, environments, each program's compilation) and each scene's time as it ends,
-// so that a run stopped by a timeout shows where it was. --egl picks the EGL platform to try
+// so that a run stopped by a timeout shows where it was. --deferred draws each frame as a deferred
+// renderer does: the raster pass writes the G-buffer (position, normal, uv and its dFdx / dFdy),
+// then a compute shader (deferred.comp) shades every pixel with the same shading functions; the
+// two passes are timed apart. --egl picks the EGL platform to try
 // first. --pragma adds "#pragma TEXT" to every fragment shader ("--pragma none" drops those given
 // before it). On an H200 (driver 580.159.04, docs/gpu.md) NVIDIA's compiler, unrolling the
 // kernels' loops as it does by default, took 68 s over lights.frag and 35 s over ibl.frag (its
@@ -54,8 +57,9 @@ namespace {
 [[noreturn]] void usage(const std::string& problem) {
     std::fprintf(stderr,
                  "glint_gl: %s\n"
-                 "usage: glint_gl [--size WxH] [--frames N] [--warmup N] [--scenes point,sun,area,ibl4,ibl8] [--compare]\n"
-                 "                [--no-images] [--env PATH.exr] [--out DIR] [--egl surfaceless|device|default] [--pragma TEXT]...\n",
+                 "usage: glint_gl [--size WxH] [--frames N] [--warmup N] [--scenes point,sun,area,ibl4,ibl8] [--deferred]\n"
+                 "                [--compare] [--no-images] [--env PATH.exr] [--out DIR] [--egl surfaceless|device|default]\n"
+                 "                [--pragma TEXT]...\n",
                  problem.c_str());
     std::exit(2);
 }
@@ -65,6 +69,7 @@ struct settings {
     int frames = 50, warmup = 10;
     std::vector<std::string> scenes{"point", "sun", "area", "ibl4", "ibl8"};
     bool compare = false, images = true;
+    bool deferred = false;  // a G-buffer raster pass, then a compute shading pass
     std::string env = std::string(GLINT_DATA_DIR) + "/envmaps/sunset.exr";
     std::string out;
     std::string egl = "surfaceless";
@@ -83,6 +88,7 @@ settings parse(int argc, char** argv) {
         else if (a == "--frames") s.frames = static_cast<int>(parse_float(a, value(), 1, 100000, usage));
         else if (a == "--warmup") s.warmup = static_cast<int>(parse_float(a, value(), 1, 100000, usage));  // llvmpipe's first timer query is garbage
         else if (a == "--compare") s.compare = true;
+        else if (a == "--deferred") s.deferred = true;
         else if (a == "--no-images") s.images = false;
         else if (a == "--env") s.env = value();
         else if (a == "--out") s.out = value();
@@ -135,31 +141,56 @@ GLuint compile(GLenum type, const std::string& source, const std::string& what) 
 // The binomial sampler the shaders are compiled for: the showcase's (lights_scene.hpp).
 constexpr glint::binomial_variant shader_variant = glint::binomial_variant::unbiased;
 
-// A program from a vertex and a fragment shader; the fragment shader gets the glint kernel files
-// (in glint::glsl_kernel_names() order) and common.glsl first, with the given #defines.
-GLuint program(const std::string& vertex, const std::string& fragment, bool ibl, bool gbuffer, const std::vector<std::string>& pragmas) {
-    const std::string version = "#version 450\n";
-    std::string fs = version;
-    for (const auto& text : pragmas) fs += "#pragma " + text + "\n";
-    fs += std::string("#define GLINT_GL_IBL ") + (ibl ? "1" : "0") + "\n#define GLINT_GL_GBUFFER " + (gbuffer ? "1" : "0") + "\n";
+// What a scene program does: shade (the forward pass), shade and write the G-buffer (--compare's
+// forward frames), write the G-buffer only (the deferred raster pass), or shade the G-buffer (the
+// deferred compute pass).
+enum class pass { shade, shade_and_gbuffer, gbuffer, deferred_shading };
+
+constexpr const char* version_line = "#version 450\n";
+
+// A shader's source: the pragmas and #defines, the glint kernel files (in glint::glsl_kernel_names()
+// order), common.glsl, then the given files.
+std::string shader_text(bool ibl, bool glints, pass what, const std::vector<std::string>& pragmas, const std::vector<std::string>& files) {
+    std::string text = version_line;
+    for (const auto& p : pragmas) text += "#pragma " + p + "\n";
+    const auto define = [&](const char* name, bool on) { text += std::string("#define ") + name + (on ? " 1\n" : " 0\n"); };
+    define("GLINT_GL_IBL", ibl);
+    define("GLINT_GL_GLINTS", glints);
+    define("GLINT_GL_SHADE", what == pass::shade || what == pass::shade_and_gbuffer);
+    define("GLINT_GL_GBUFFER", what == pass::shade_and_gbuffer || what == pass::gbuffer);
+    define("GLINT_GL_COMPUTE", what == pass::deferred_shading);
     // The one sampler glint_gl draws with (set_grid checks the grid's), known to the compiler.
-    fs += "#define GLINT_BINOMIAL_VARIANT " + std::to_string(static_cast<int>(shader_variant)) + "\n#define GLINT_BINOMIAL_POW_METHOD " +
-          std::to_string(static_cast<int>(glint::published_pow_method(shader_variant))) + "\n";
-    for (const auto name : glint::glsl_kernel_names()) fs += glint::glsl_source(name);
-    fs += glint_gl::shader_source("common.glsl");
-    fs += glint_gl::shader_source(fragment);
-    const GLuint v = compile(GL_VERTEX_SHADER, version + glint_gl::shader_source(vertex), vertex);
-    const GLuint f = compile(GL_FRAGMENT_SHADER, fs, fragment);
+    text += "#define GLINT_BINOMIAL_VARIANT " + std::to_string(static_cast<int>(shader_variant)) + "\n#define GLINT_BINOMIAL_POW_METHOD " +
+            std::to_string(static_cast<int>(glint::published_pow_method(shader_variant))) + "\n";
+    for (const auto name : glint::glsl_kernel_names()) text += glint::glsl_source(name);
+    text += glint_gl::shader_source("common.glsl");
+    for (const auto& f : files) text += glint_gl::shader_source(f);
+    return text;
+}
+
+GLuint link(const std::vector<GLuint>& shaders, const std::string& what) {
     const GLuint p = glCreateProgram();
-    glAttachShader(p, v);
-    glAttachShader(p, f);
+    for (const GLuint s : shaders) glAttachShader(p, s);
     glLinkProgram(p);
-    glDeleteShader(v);
-    glDeleteShader(f);
+    for (const GLuint s : shaders) glDeleteShader(s);
     GLint ok = 0;
     glGetProgramiv(p, GL_LINK_STATUS, &ok);
-    require(ok, p, glGetProgramInfoLog, vertex + " + " + fragment + " do not link");
+    require(ok, p, glGetProgramInfoLog, what + " do not link");
     return p;
+}
+
+// A raster program: a vertex shader and a fragment shader (with the kernels, for `what`).
+GLuint program(const std::string& vertex, const std::string& fragment, bool ibl, bool glints, pass what, const std::vector<std::string>& pragmas) {
+    const GLuint v = compile(GL_VERTEX_SHADER, version_line + glint_gl::shader_source(vertex), vertex);
+    const GLuint f = compile(GL_FRAGMENT_SHADER, shader_text(ibl, glints, what, pragmas, {fragment}), fragment);
+    return link({v, f}, vertex + " + " + fragment);
+}
+
+// The deferred shading pass: deferred.comp after the scene's fragment file, whose shading
+// functions it calls.
+GLuint compute_program(const std::string& fragment, bool ibl, bool glints, const std::vector<std::string>& pragmas) {
+    const GLuint c = compile(GL_COMPUTE_SHADER, shader_text(ibl, glints, pass::deferred_shading, pragmas, {fragment, "deferred.comp"}), "deferred.comp");
+    return link({c}, fragment + " + deferred.comp");
 }
 
 // Uniform setters by name (a name the compiler optimised away is skipped, as GL does).
@@ -345,13 +376,18 @@ void set_lights(GLuint p, const scene_options& opt, const light_setup& ls) {
     set(p, "u_flake_coverage", flake_coverage);
     set(p, "u_uv_per_unit", uv_per_unit);
     set_grid(p, lights_grid(opt));  // the shader adds 1 (sphere) or 2 (plane) to the seed, as shade() does
-    set(p, "u_glints", opt.smooth ? 0 : 1);
     set(p, "u_roughness", opt.roughness);
 }
 
+// Indexed [ibl]: the lights scene's at 0, the IBL scene's at 1; [glints]: the smooth BRDF's
+// program at 0 (compiled without the glint code, as a renderer's smooth material would be; a
+// uniform branch around it is not enough: on an H200, the smooth frame of a program that had the
+// glint code behind a uniform branch cost 0.9 to 0.95 of its glint frame, docs/gpu.md), glints at 1.
 struct programs {
-    GLuint background[2] = {};  // lights, IBL
-    GLuint surface[2][2] = {};  // [ibl][gbuffer]
+    GLuint background[2] = {};
+    GLuint surface[2][2][2] = {};       // [ibl][glints][gbuffer]: forward shading, without and with the G-buffer
+    GLuint gbuffer_only[2] = {};        // --deferred: the raster pass
+    GLuint deferred_shading[2][2] = {};  // --deferred: the compute pass, [ibl][glints]
 };
 
 double seconds_since(std::chrono::steady_clock::time_point t0) {
@@ -361,22 +397,46 @@ double seconds_since(std::chrono::steady_clock::time_point t0) {
 // Compiles and links the programs of the lights scenes and / or the IBL scenes, naming each before
 // it starts and giving its time (a driver's compiler can take long over the inlined kernels; the
 // time is the driver's, not the frame's).
-programs make_programs(bool lights, bool ibl_scenes, bool gbuffer, const std::vector<std::string>& pragmas) {
-    const auto build = [&](const char* vertex, const char* fragment, bool ibl, bool g) {
-        std::printf("glint_gl: compiling %s (%s%s)...\n", fragment, ibl ? "IBL" : "lights", g ? ", G-buffer" : "");
+programs make_programs(bool lights, bool ibl_scenes, bool deferred, bool gbuffer, const std::vector<std::string>& pragmas) {
+    const auto build = [&](const char* vertex, const char* fragment, bool ibl, bool glints, pass what) {
+        static const char* const what_names[] = {"", ", G-buffer", ", G-buffer only", ", deferred shading"};
+        std::printf("glint_gl: compiling %s (%s, %s%s)...\n", what == pass::deferred_shading ? "deferred.comp" : fragment, ibl ? "IBL" : "lights",
+                    glints ? "glints" : "smooth", what_names[static_cast<int>(what)]);
         const auto t0 = std::chrono::steady_clock::now();
-        const GLuint p = program(vertex, fragment, ibl, g, pragmas);
+        const GLuint p = what == pass::deferred_shading ? compute_program(fragment, ibl, glints, pragmas)
+                                                        : program(vertex, fragment, ibl, glints, what, pragmas);
         std::printf("glint_gl: compiled in %.2f s\n", seconds_since(t0));
         return p;
     };
     programs p;
     for (int ibl = 0; ibl < 2; ++ibl) {
         if (!(ibl ? ibl_scenes : lights)) continue;
-        p.background[ibl] = build("fullscreen.vert", "background.frag", ibl != 0, false);
-        p.surface[ibl][0] = build("scene.vert", ibl ? "ibl.frag" : "lights.frag", ibl != 0, false);
-        if (gbuffer) p.surface[ibl][1] = build("scene.vert", ibl ? "ibl.frag" : "lights.frag", ibl != 0, true);
+        const char* fragment = ibl ? "ibl.frag" : "lights.frag";
+        if (deferred) {  // the compute pass draws the background too
+            p.gbuffer_only[ibl] = build("scene.vert", fragment, ibl != 0, false, pass::gbuffer);
+            for (int glints = 0; glints < 2; ++glints) p.deferred_shading[ibl][glints] = build(nullptr, fragment, ibl != 0, glints != 0, pass::deferred_shading);
+            continue;
+        }
+        p.background[ibl] = build("fullscreen.vert", "background.frag", ibl != 0, false, pass::shade);
+        for (int glints = 0; glints < 2; ++glints) {
+            p.surface[ibl][glints][0] = build("scene.vert", fragment, ibl != 0, glints != 0, pass::shade);
+            if (gbuffer) p.surface[ibl][glints][1] = build("scene.vert", fragment, ibl != 0, glints != 0, pass::shade_and_gbuffer);
+        }
     }
     return p;
+}
+
+// The sphere (and the lights scene's plane) with program p.
+void draw_surfaces(const scene& s, GLuint p, const mesh& m) {
+    glUseProgram(p);
+    glBindVertexArray(m.vao);
+    if (!s.ibl) set(p, "u_sphere", 1);
+    glDrawElements(GL_TRIANGLES, m.sphere_indices, GL_UNSIGNED_INT, nullptr);
+    if (!s.ibl) {
+        set(p, "u_sphere", 0);
+        glDrawElements(GL_TRIANGLES, m.plane_indices, GL_UNSIGNED_INT,
+                       reinterpret_cast<const void*>(static_cast<std::uintptr_t>(m.sphere_indices) * sizeof(std::uint32_t)));
+    }
 }
 
 // Draws one frame of scene s into t: the background, then the sphere (and the plane).
@@ -400,16 +460,32 @@ void draw(const scene& s, const programs& progs, bool gbuffer, const mesh& m, co
     glNamedFramebufferDrawBuffers(t.fbo, gbuffer ? 5 : 1, all);
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
-    const GLuint p = progs.surface[s.ibl ? 1 : 0][gbuffer ? 1 : 0];
-    glUseProgram(p);
-    glBindVertexArray(m.vao);
-    if (!s.ibl) set(p, "u_sphere", 1);
-    glDrawElements(GL_TRIANGLES, m.sphere_indices, GL_UNSIGNED_INT, nullptr);
-    if (!s.ibl) {
-        set(p, "u_sphere", 0);
-        glDrawElements(GL_TRIANGLES, m.plane_indices, GL_UNSIGNED_INT,
-                       reinterpret_cast<const void*>(static_cast<std::uintptr_t>(m.sphere_indices) * sizeof(std::uint32_t)));
-    }
+    draw_surfaces(s, progs.surface[s.ibl ? 1 : 0][s.smooth ? 0 : 1][gbuffer ? 1 : 0], m);
+}
+
+// --deferred, the raster pass: the G-buffer only (attachments 1 to 4, cleared to 0: kind 0 is the
+// background), no colour.
+void draw_gbuffer(const scene& s, const programs& progs, const mesh& m, const target& t) {
+    const GLenum gbuffer_only[5] = {GL_NONE, GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2, GL_COLOR_ATTACHMENT3, GL_COLOR_ATTACHMENT4};
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, t.fbo);
+    glViewport(0, 0, t.width, t.height);
+    glNamedFramebufferDrawBuffers(t.fbo, 5, gbuffer_only);
+    const float zero[4] = {0, 0, 0, 0}, far = 1.0f;
+    for (int i = 1; i < 5; ++i) glClearNamedFramebufferfv(t.fbo, GL_COLOR, i, zero);
+    glClearNamedFramebufferfv(t.fbo, GL_DEPTH, 0, &far);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);
+    draw_surfaces(s, progs.gbuffer_only[s.ibl ? 1 : 0], m);
+}
+
+// --deferred, the shading pass: deferred.comp over the G-buffer, into attachment 0.
+void shade_gbuffer(const scene& s, const programs& progs, const target& t) {
+    glUseProgram(progs.deferred_shading[s.ibl ? 1 : 0][s.smooth ? 0 : 1]);
+    for (GLuint i = 0; i < 4; ++i) glBindImageTexture(i, t.color[i + 1], 0, GL_FALSE, 0, GL_READ_ONLY, GL_RGBA32F);
+    glBindImageTexture(4, t.color[0], 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+    glDispatchCompute(static_cast<GLuint>((t.width + 7) / 8), static_cast<GLuint>((t.height + 7) / 8), 1);
+    // The image stores made visible to glReadPixels and to the next frame's clears.
+    glMemoryBarrier(GL_FRAMEBUFFER_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
 }
 
 // ---- Comparison with the CPU ----------------------------------------------------------------------
@@ -529,13 +605,14 @@ int main(int argc, char** argv) {
                 genv[K] = upload(*envs[K]);
             }
         }
-        const programs progs = make_programs(lights, need[4] || need[8], opt.compare, opt.pragmas);
+        const programs progs = make_programs(lights, need[4] || need[8], opt.deferred, opt.compare, opt.pragmas);
         std::printf("glint_gl: [%.1f s] drawing\n", seconds_since(start));
         const mesh m = make_mesh();
         const target t = make_target(opt.width, opt.height);
-        GLuint empty_vao = 0, query = 0;
+        GLuint empty_vao = 0, query = 0, shading_query = 0;
         glCreateVertexArrays(1, &empty_vao);
         glCreateQueries(GL_TIME_ELAPSED, 1, &query);
+        glCreateQueries(GL_TIME_ELAPSED, 1, &shading_query);
 
         std::vector<scene> scenes;
         for (const auto& n : opt.scenes)
@@ -546,9 +623,15 @@ int main(int argc, char** argv) {
                 scenes.push_back(s);
             }
         std::ostringstream timings, checks;
-        timings << "| scene | glint ms (GL timer, median) | smooth ms | glint / smooth | glint wall ms (glFinish, median) | smooth wall ms | "
-                   "wall ratio |\n|---|---|---|---|---|---|---|\n";
+        if (opt.deferred)
+            timings << "| scene | glint ms (GL timer, median) | smooth ms | glint / smooth | raster pass ms (glint / smooth) | glint shading pass ms | "
+                       "smooth shading pass ms | shading passes' ratio |\n|---|---|---|---|---|---|---|---|\n";
+        else
+            timings << "| scene | glint ms (GL timer, median) | smooth ms | glint / smooth | glint wall ms (glFinish, median) | smooth wall ms | "
+                       "wall ratio |\n|---|---|---|---|---|---|---|\n";
         std::vector<double> smooth_ms(scenes.size(), 0), frame_ms(scenes.size(), 0), smooth_wall(scenes.size(), 0);
+        // --deferred: each pass's median apart (the frame's is the median of their sums).
+        std::vector<double> raster_ms(scenes.size(), 0), shading_ms(scenes.size(), 0);
         std::vector<float> smooth_ray;  // the ray tracer's smooth frame of the scene (smooth comes first)
         double smooth_share = 0;
         bool failed = false;
@@ -556,52 +639,79 @@ int main(int argc, char** argv) {
             const scene& s = scenes[si];
             for (int gbuffer = 0; gbuffer < 2; ++gbuffer) {
                 if (gbuffer && !opt.compare) continue;
-                const GLuint p = progs.surface[s.ibl ? 1 : 0][gbuffer];
+                const int ibl = s.ibl ? 1 : 0;
+                // Every program of the frame gets every uniform (GL skips names a program lacks).
+                const int glints = s.smooth ? 0 : 1;
+                const std::vector<GLuint> frame_programs = opt.deferred
+                                                               ? std::vector<GLuint>{progs.gbuffer_only[ibl], progs.deferred_shading[ibl][glints]}
+                                                               : std::vector<GLuint>{progs.surface[ibl][glints][gbuffer], progs.background[ibl]};
                 const camera cam = s.ibl ? ibl_camera(opt.width, opt.height) : camera(opt.width, opt.height);
-                for (const GLuint q : {p, progs.background[s.ibl ? 1 : 0]}) {
-                    set_camera(q, cam);
-                    if (s.ibl) {
-                        set_environment(q, *envs[s.K]);
-                        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, genv[s.K].chain);
-                        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, genv[s.K].tables);
-                    }
-                }
                 const glm::mat4 vp = glm::perspective(cam.fov_y, static_cast<float>(opt.width) / static_cast<float>(opt.height), 0.05f, 1e6f) *
                                      glm::lookAt(cam.eye, cam.target, vec3(0, 1, 0));
-                glProgramUniformMatrix4fv(p, glGetUniformLocation(p, "u_view_projection"), 1, GL_FALSE, glm::value_ptr(vp));
                 if (s.ibl) {
-                    ibl_settings is;
-                    is.smooth = s.smooth;
-                    set(p, "u_glints", s.smooth ? 0 : 1);
-                    set(p, "u_roughness", is.roughness);
-                    set_grid(p, ibl_grid(is));
-                } else {
-                    scene_options so;
-                    so.light = s.light, so.smooth = s.smooth;
-                    light_setup ls;
-                    ls.type = s.light;
-                    set_lights(p, so, ls);
+                    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, genv[s.K].chain);
+                    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, genv[s.K].tables);
                 }
-                set(p, "u_silver_eta", silver_eta);
-                set(p, "u_silver_k", silver_k);
+                for (const GLuint p : frame_programs) {
+                    set_camera(p, cam);
+                    glProgramUniformMatrix4fv(p, glGetUniformLocation(p, "u_view_projection"), 1, GL_FALSE, glm::value_ptr(vp));
+                    if (s.ibl) {
+                        set_environment(p, *envs[s.K]);
+                        ibl_settings is;
+                        is.smooth = s.smooth;
+                        set(p, "u_roughness", is.roughness);
+                        set_grid(p, ibl_grid(is));
+                    } else {
+                        scene_options so;
+                        so.light = s.light, so.smooth = s.smooth;
+                        light_setup ls;
+                        ls.type = s.light;
+                        set_lights(p, so, ls);
+                    }
+                    set(p, "u_silver_eta", silver_eta);
+                    set(p, "u_silver_k", silver_k);
+                }
                 if (!gbuffer) {
-                    // Timing: warm-up frames, then the median of GL_TIME_ELAPSED over the frames.
-                    std::vector<double> gpu, wall;
+                    // Timing: warm-up frames, then the median of GL_TIME_ELAPSED over the frames
+                    // (deferred: one query per pass, in turn, since GL's time queries do not nest).
+                    std::vector<double> gpu, wall, raster, shading;
                     for (int f = 0; f < opt.warmup + opt.frames; ++f) {
                         const auto w0 = std::chrono::steady_clock::now();
+                        GLuint64 ns = 0, shading_ns = 0;
                         glBeginQuery(GL_TIME_ELAPSED, query);
-                        draw(s, progs, false, m, t, empty_vao);
-                        glEndQuery(GL_TIME_ELAPSED);
-                        GLuint64 ns = 0;
+                        if (opt.deferred) {
+                            draw_gbuffer(s, progs, m, t);
+                            glEndQuery(GL_TIME_ELAPSED);
+                            glBeginQuery(GL_TIME_ELAPSED, shading_query);
+                            shade_gbuffer(s, progs, t);
+                            glEndQuery(GL_TIME_ELAPSED);
+                            glGetQueryObjectui64v(shading_query, GL_QUERY_RESULT, &shading_ns);
+                        } else {
+                            draw(s, progs, false, m, t, empty_vao);
+                            glEndQuery(GL_TIME_ELAPSED);
+                        }
                         glGetQueryObjectui64v(query, GL_QUERY_RESULT, &ns);
                         glFinish();
                         const double w = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - w0).count();
-                        if (f >= opt.warmup) gpu.push_back(static_cast<double>(ns) * 1e-6), wall.push_back(w);
+                        if (f < opt.warmup) continue;
+                        gpu.push_back(static_cast<double>(ns + shading_ns) * 1e-6), wall.push_back(w);
+                        raster.push_back(static_cast<double>(ns) * 1e-6), shading.push_back(static_cast<double>(shading_ns) * 1e-6);
                     }
                     frame_ms[si] = median(gpu);
                     const double wall_ms = median(wall);
-                    std::printf("glint_gl: %-12s %9.3f ms (GL timer)  %9.3f ms (wall)\n", s.label().c_str(), frame_ms[si], wall_ms);
+                    if (opt.deferred) {
+                        raster_ms[si] = median(raster), shading_ms[si] = median(shading);
+                        std::printf("glint_gl: %-12s %9.3f ms (GL timer: raster %.3f + shading %.3f)  %9.3f ms (wall)\n", s.label().c_str(),
+                                    frame_ms[si], raster_ms[si], shading_ms[si], wall_ms);
+                    } else {
+                        std::printf("glint_gl: %-12s %9.3f ms (GL timer)  %9.3f ms (wall)\n", s.label().c_str(), frame_ms[si], wall_ms);
+                    }
                     if (s.smooth) smooth_ms[si + 1] = frame_ms[si], smooth_wall[si + 1] = wall_ms;
+                    else if (opt.deferred)  // the smooth frame is scene si - 1
+                        timings << "| " << s.name << " | " << fmt_ms(frame_ms[si]) << " | " << fmt_ms(smooth_ms[si]) << " | "
+                                << fmt_ms(frame_ms[si] / smooth_ms[si]) << "x | " << fmt_ms(raster_ms[si]) << " / " << fmt_ms(raster_ms[si - 1]) << " | "
+                                << fmt_ms(shading_ms[si]) << " | " << fmt_ms(shading_ms[si - 1]) << " | " << fmt_ms(shading_ms[si] / shading_ms[si - 1])
+                                << "x |\n";
                     else
                         timings << "| " << s.name << " | " << fmt_ms(frame_ms[si]) << " | " << fmt_ms(smooth_ms[si]) << " | "
                                 << fmt_ms(frame_ms[si] / smooth_ms[si]) << "x | " << fmt_ms(wall_ms) << " | " << fmt_ms(smooth_wall[si]) << " | "
@@ -613,7 +723,12 @@ int main(int argc, char** argv) {
                         write_exr_and_preview(opt.out + "/glint_gl_" + s.name + ".exr", opt.width, opt.height, rgb, s.ibl ? 1.2f : 1.0f);
                     }
                 } else {
-                    draw(s, progs, true, m, t, empty_vao);
+                    if (opt.deferred) {  // the timed frame's passes again: its G-buffer is the replay's input
+                        draw_gbuffer(s, progs, m, t);
+                        shade_gbuffer(s, progs, t);
+                    } else {
+                        draw(s, progs, true, m, t, empty_vao);
+                    }
                     glFinish();
                     const auto color = read_rgba(t, 0), uv_dx = read_rgba(t, 1), dy_kind = read_rgba(t, 2), pos = read_rgba(t, 3), nrm = read_rgba(t, 4);
                     std::vector<float> replay, ray;
@@ -648,10 +763,15 @@ int main(int argc, char** argv) {
         for (int i = 1; i < argc; ++i) command += std::string(" ") + argv[i];
         std::ostringstream report;
         report << "# The showcase scenes through OpenGL (glint_gl): measured\n\nGenerated by `" << command
-               << "` (examples/gl/glint_gl.cpp); do not edit by hand. Frame times are GL_TIME_ELAPSED queries around each frame's draws "
-                  "(the background pass, the sphere and the plane), the median over the frames; wall ms adds the query's wait and glFinish. "
-                  "Every scene is drawn with glints and with the smooth BRDF of the same scene (the IBL's smooth frame reads the "
-                  "radiance only).\n\n"
+               << "` (examples/gl/glint_gl.cpp); do not edit by hand. "
+               << (opt.deferred ? "Deferred: each frame is a raster pass that writes the G-buffer (position, normal, uv and its dFdx / dFdy) and "
+                                  "a compute pass (deferred.comp) that shades every pixel, the background included, with the forward shaders' "
+                                  "functions. Frame times are the sum of the two passes' GL_TIME_ELAPSED queries, the median over the frames; "
+                                  "each pass's median is given apart. "
+                                : "Frame times are GL_TIME_ELAPSED queries around each frame's draws (the background pass, the sphere and the "
+                                  "plane), the median over the frames; wall ms adds the query's wait and glFinish. ")
+               << "Every scene is drawn with glints and with the smooth BRDF of the same scene, each by its own programs (the smooth ones "
+                  "compiled without the glint code; the IBL's smooth frame reads the radiance only).\n\n"
                << "Device: " << device << " (OpenGL " << glint_gl::gl_context::version() << "), " << opt.width << "x" << opt.height << ", median of "
                << opt.frames << " frames after " << opt.warmup << " warm-up.\n\n"
                << timings.str();

@@ -1,17 +1,22 @@
-// glint_gl: what every fragment shader shares, after the glint kernel files: the camera (the
+// glint_gl: what every fragment shader shares, after the glint kernel files and the #defines
+// (GLINT_GL_GLINTS: 0 for the smooth BRDF's programs, which leave the glint code out): the camera (the
 // CPU renderer's camera::ray, examples/lights_scene.hpp), the scenes' constants, the lights
 // scene's sky, and the IBL scene's environment (glint::environment's lookups, examples/ibl.cpp,
 // with the same manual bilinear filtering over shader storage buffers).
 uniform vec3 u_eye, u_forward, u_right, u_up;
 uniform vec2 u_size;          // viewport width and height in pixels
 uniform float u_ray_scale;    // 2 tan(fov_y / 2) / height
-uniform int u_glints;         // 0: the smooth BRDF
 uniform float u_roughness;    // GGX alpha
 uniform glint_grid_params u_grid;  // the seed here is the scene's; the lights scene adds 1 (sphere) or 2 (plane)
 uniform vec3 u_silver_eta, u_silver_k;
 
-// The image-space pixel centre of this fragment (rows from the top, as the CPU renderer's).
+// The image-space pixel centre of this fragment (rows from the top, as the CPU renderer's); in the
+// deferred shading pass (deferred.comp), of the invocation's pixel.
+#if GLINT_GL_COMPUTE
+vec2 glint_gl_pixel() { return vec2(float(gl_GlobalInvocationID.x) + 0.5, u_size.y - (float(gl_GlobalInvocationID.y) + 0.5)); }
+#else
 vec2 glint_gl_pixel() { return vec2(gl_FragCoord.x, u_size.y - gl_FragCoord.y); }
+#endif
 
 vec3 glint_gl_ray(vec2 f) {
     return normalize(u_forward + u_right * ((f.x - 0.5 * u_size.x) * u_ray_scale) - u_up * ((f.y - 0.5 * u_size.y) * u_ray_scale));
@@ -35,7 +40,7 @@ uniform glint_ibl_levels u_levels;
 
 void glint_gl_add_bilinear(int m, vec2 uv, float weight, inout float v[11]) {
     glint_bilinear_taps taps = glint_bilinear(uv, u_chain[m].y, u_chain[m].z);
-    int channels = u_glints != 0 ? u_channels : 3;  // the smooth BRDF reads the radiance only
+    int channels = GLINT_GL_GLINTS != 0 ? u_channels : 3;  // the smooth BRDF reads the radiance only
     for (int i = 0; i < 4; ++i) {
         float w = weight * taps.weight[i];
         int first = u_chain[m].x + (taps.texel[i].y * u_chain[m].y + taps.texel[i].x) * u_channels;
@@ -70,3 +75,16 @@ float glint_gl_table(int which, float x, float y) {
     return (1.0 - ay) * ((1.0 - ax) * a00 + ax * a10) + ay * ((1.0 - ax) * a01 + ax * a11);
 }
 #endif
+
+// The background where no surface covers the pixel (background.frag, deferred.comp): the
+// environment's radiance, or the lights scene's sky.
+vec3 glint_gl_background(vec3 d) {
+#if GLINT_GL_IBL
+    vec3 radiance;
+    glint_ibl_indicators ind;
+    glint_gl_lookup(d, 0.0, radiance, ind);
+    return radiance;
+#else
+    return glint_gl_sky(d);
+#endif
+}

@@ -1,9 +1,35 @@
 // glint_gl: the IBL scene's sphere, shaded as examples/ibl_scene.hpp shade_ibl() does on the CPU,
 // with the footprint from dFdxFine / dFdyFine of uv (y negated: the CPU's rows run downwards).
+// Forward (GLINT_GL_SHADE): this fragment shader shades; deferred (--deferred), it writes the
+// G-buffer only and deferred.comp, which includes this file with GLINT_GL_COMPUTE, calls
+// glint_gl_shade_ibl on it.
+
+vec3 glint_gl_shade_ibl(vec3 position, vec3 n, vec2 uv, vec2 duvdx, vec2 duvdy) {
+    vec3 d = normalize(position - u_eye);
+    float sa = sqrt(u_roughness);
+    float cos_o = max(dot(-d, n), 1e-4);
+    vec3 radiance;
+    glint_ibl_indicators ind;
+    glint_gl_lookup(reflect(d, n), sa, radiance, ind);
+    float m = 1.0;
+    if (GLINT_GL_GLINTS != 0) {
+        vec2 alpha = vec2(u_roughness);
+        float dh = glint_total_area(0, alpha);  // GGX
+        m = glint_modulation(glint_ibl_sample(uv, duvdx, duvdy, u_grid, u_levels, ind, glint_gl_table(1, sqrt(max(cos_o, 0.0)), sa), dh));
+    }
+    float albedo = glint_gl_table(0, sqrt(max(cos_o, 0.0)), sa);
+    vec3 L;
+    for (int c = 0; c < 3; ++c) L[c] = glint_fresnel_conductor(u_silver_eta[c], u_silver_k[c], cos_o) * albedo * radiance[c] * m;
+    return L;
+}
+
+#if !GLINT_GL_COMPUTE
 in vec3 v_position;
 in vec3 v_normal;
 in vec2 v_uv;
+#if GLINT_GL_SHADE
 layout(location = 0) out vec4 o_color;
+#endif
 #if GLINT_GL_GBUFFER
 layout(location = 1) out vec4 o_uv_dx;
 layout(location = 2) out vec4 o_dy_kind;
@@ -14,22 +40,9 @@ layout(location = 4) out vec4 o_normal;
 void main() {
     vec3 n = normalize(v_normal);
     vec2 duvdx = dFdxFine(v_uv), duvdy = -dFdyFine(v_uv);
-    vec3 d = normalize(v_position - u_eye);
-    float sa = sqrt(u_roughness);
-    float cos_o = max(dot(-d, n), 1e-4);
-    vec3 radiance;
-    glint_ibl_indicators ind;
-    glint_gl_lookup(reflect(d, n), sa, radiance, ind);
-    float m = 1.0;
-    if (u_glints != 0) {
-        vec2 alpha = vec2(u_roughness);
-        float dh = glint_total_area(0, alpha);  // GGX
-        m = glint_modulation(glint_ibl_sample(v_uv, duvdx, duvdy, u_grid, u_levels, ind, glint_gl_table(1, sqrt(max(cos_o, 0.0)), sa), dh));
-    }
-    float albedo = glint_gl_table(0, sqrt(max(cos_o, 0.0)), sa);
-    vec3 L;
-    for (int c = 0; c < 3; ++c) L[c] = glint_fresnel_conductor(u_silver_eta[c], u_silver_k[c], cos_o) * albedo * radiance[c] * m;
-    o_color = vec4(L, 1.0);
+#if GLINT_GL_SHADE
+    o_color = vec4(glint_gl_shade_ibl(v_position, n, v_uv, duvdx, duvdy), 1.0);
+#endif
 #if GLINT_GL_GBUFFER
     o_uv_dx = vec4(v_uv, duvdx);
     o_dy_kind = vec4(duvdy, 1.0, 1.0);
@@ -37,3 +50,4 @@ void main() {
     o_normal = vec4(n, 1.0);
 #endif
 }
+#endif

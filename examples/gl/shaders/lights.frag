@@ -3,7 +3,9 @@
 // y derivative negated, since the CPU renderer's rows run downwards). The sphere's position,
 // normal and uv are the mesh's, interpolated; the plane's are reconstructed from the pixel's ray
 // (as a deferred renderer reconstructs them from depth): interpolated across a quad of +-1e5
-// units, float positions would be 6e-3 units off near the camera.
+// units, float positions would be 6e-3 units off near the camera. Forward (GLINT_GL_SHADE): this
+// fragment shader shades; deferred (--deferred), it writes the G-buffer only and deferred.comp,
+// which includes this file with GLINT_GL_COMPUTE, calls glint_gl_shade_surface on it.
 uniform int u_sphere;      // 1: the sphere, 0: the plane
 uniform int u_light;       // 0: point, 1: sun, 2: area
 uniform int u_ggx;         // glint::ndf::ggx
@@ -16,17 +18,6 @@ uniform float u_rect_radiance;
 uniform vec3 u_flake_eta, u_flake_k, u_plane_diffuse;
 uniform float u_flake_coverage;
 uniform float u_uv_per_unit;
-
-in vec3 v_position;
-in vec3 v_normal;
-in vec2 v_uv;
-layout(location = 0) out vec4 o_color;
-#if GLINT_GL_GBUFFER
-layout(location = 1) out vec4 o_uv_dx;    // uv, du/dx
-layout(location = 2) out vec4 o_dy_kind;  // du/dy, 1 sphere / 2 plane, 1
-layout(location = 3) out vec4 o_position;
-layout(location = 4) out vec4 o_normal;
-#endif
 
 vec3 to_local(vec3 t, vec3 b, vec3 n, vec3 w) { return vec3(dot(w, t), dot(w, b), dot(w, n)); }
 
@@ -71,7 +62,7 @@ vec3 shade(bool sphere, vec3 p, vec3 n, vec3 t, vec3 b, vec2 uv, vec3 wo_world, 
     float specular = u_light == 0 ? g2 * glint_ndf(u_ggx, hv, alpha) * point_scale / (4.0 * wo.z)
                                   : g2 * radiance * dot(hv, wi_c) * d_omega / wo.z;
     if (!(specular > 0.0)) return result;
-    if (u_glints != 0) {
+    if (GLINT_GL_GLINTS != 0) {
         float dh = glint_total_area(u_ggx, alpha);  // only the glints need D_H (lights_scene.hpp)
         glint_grid_params g = u_grid;
         g.seed = u_grid.seed + (sphere ? 1u : 2u);
@@ -93,15 +84,37 @@ vec3 shade(bool sphere, vec3 p, vec3 n, vec3 t, vec3 b, vec2 uv, vec3 wo_world, 
     return result;
 }
 
+// The sphere's tangent frame from its (interpolated) normal: lights_scene.hpp sphere_frame().
+void glint_gl_sphere_frame(vec3 n, out vec3 t, out vec3 b) {
+    float s = max(sqrt(n.x * n.x + n.z * n.z), 1e-6);
+    t = vec3(-n.z / s, 0.0, n.x / s);
+    b = cross(n, t);
+}
+
+// A surface point's shading, as the G-buffer holds it (position, normal, uv and its derivatives).
+vec3 glint_gl_shade_surface(bool sphere, vec3 p, vec3 n, vec2 uv, vec2 duvdx, vec2 duvdy) {
+    vec3 t = vec3(1.0, 0.0, 0.0), b = vec3(0.0, 0.0, -1.0);
+    if (sphere) glint_gl_sphere_frame(n, t, b);
+    return shade(sphere, p, n, t, b, uv, normalize(u_eye - p), duvdx, duvdy);
+}
+
+#if !GLINT_GL_COMPUTE
+in vec3 v_position;
+in vec3 v_normal;
+in vec2 v_uv;
+#if GLINT_GL_SHADE
+layout(location = 0) out vec4 o_color;
+#endif
+#if GLINT_GL_GBUFFER
+layout(location = 1) out vec4 o_uv_dx;    // uv, du/dx
+layout(location = 2) out vec4 o_dy_kind;  // du/dy, 1 sphere / 2 plane, 1
+layout(location = 3) out vec4 o_position;
+layout(location = 4) out vec4 o_normal;
+#endif
+
 void main() {
     bool sphere = u_sphere != 0;
-    vec3 n = vec3(0.0, 1.0, 0.0), t = vec3(1.0, 0.0, 0.0), b = vec3(0.0, 0.0, -1.0);
-    if (sphere) {
-        n = normalize(v_normal);
-        float s = max(sqrt(n.x * n.x + n.z * n.z), 1e-6);
-        t = vec3(-n.z / s, 0.0, n.x / s);
-        b = cross(n, t);
-    }
+    vec3 n = sphere ? normalize(v_normal) : vec3(0.0, 1.0, 0.0);
     vec3 p = v_position;
     vec2 uv = v_uv;
     if (!sphere) {  // lights_scene.hpp intersect(): the ray meets y = 0
@@ -110,8 +123,9 @@ void main() {
         uv = vec2(p.x, -p.z) * u_uv_per_unit;
     }
     vec2 duvdx = dFdxFine(uv), duvdy = -dFdyFine(uv);
-    vec3 wo = normalize(u_eye - p);
-    o_color = vec4(shade(sphere, p, n, t, b, uv, wo, duvdx, duvdy), 1.0);
+#if GLINT_GL_SHADE
+    o_color = vec4(glint_gl_shade_surface(sphere, p, n, uv, duvdx, duvdy), 1.0);
+#endif
 #if GLINT_GL_GBUFFER
     o_uv_dx = vec4(uv, duvdx);
     o_dy_kind = vec4(duvdy, sphere ? 1.0 : 2.0, 1.0);
@@ -119,3 +133,4 @@ void main() {
     o_normal = vec4(n, 1.0);
 #endif
 }
+#endif

@@ -17,7 +17,7 @@
 // renderer does: the raster pass writes the G-buffer (position, normal, uv and its dFdx / dFdy),
 // then a compute shader (deferred.comp) shades every pixel with the same shading functions; the
 // two passes are timed apart. --egl picks the EGL platform to try
-// first. --pragma adds "#pragma TEXT" to every fragment shader ("--pragma none" drops those given
+// first. --pragma adds "#pragma TEXT" to every fragment and compute shader ("--pragma none" drops those given
 // before it). On an H200 (driver 580.159.04, docs/gpu.md) NVIDIA's compiler, unrolling the
 // kernels' loops as it does by default, took 68 s over lights.frag and 35 s over ibl.frag (its
 // disk cache makes a second run's compilation instant); --pragma 'optionNV(unroll none)' cut that
@@ -382,7 +382,7 @@ void set_lights(GLuint p, const scene_options& opt, const light_setup& ls) {
 // Indexed [ibl]: the lights scene's at 0, the IBL scene's at 1; [glints]: the smooth BRDF's
 // program at 0 (compiled without the glint code, as a renderer's smooth material would be; a
 // uniform branch around it is not enough: on an H200, the smooth frame of a program that had the
-// glint code behind a uniform branch cost 0.9 to 0.95 of its glint frame, docs/gpu.md), glints at 1.
+// glint code behind a uniform branch cost 0.86x to 0.93x its glint frame, docs/gpu.md), glints at 1.
 struct programs {
     GLuint background[2] = {};
     GLuint surface[2][2][2] = {};       // [ibl][glints][gbuffer]: forward shading, without and with the G-buffer

@@ -6,8 +6,9 @@
 // the CPU: the same shading replayed in C++ from the frame's G-buffer (the same inputs), and the
 // CPU ray tracer of examples/lights.cpp and examples/ibl.cpp (its own geometry and footprints).
 //
-//   glint_gl [--size WxH] [--frames N] [--warmup N] [--scenes LIST] [--deferred] [--compare]
-//            [--no-images] [--env PATH.exr] [--out DIR] [--egl surfaceless|device|default] [--pragma TEXT]...
+//   glint_gl [--size WxH] [--frames N] [--warmup N] [--scenes LIST] [--deferred] [--const-table]
+//            [--compare] [--no-images] [--env PATH.exr] [--out DIR] [--egl surfaceless|device|default]
+//            [--pragma TEXT]...
 //
 // Scenes: point, sun, area (the lights scene), ibl4, ibl8 (K = 4, 8), each with glints and with
 // the smooth BRDF; LIST is comma-separated (default: all). Timings go to stdout and, with --out,
@@ -16,7 +17,9 @@
 // so that a run stopped by a timeout shows where it was. --deferred draws each frame as a deferred
 // renderer does: the raster pass writes the G-buffer (position, normal, uv and its dFdx / dFdy),
 // then a compute shader (deferred.comp) shades every pixel with the same shading functions; the
-// two passes are timed apart. --egl picks the EGL platform to try
+// two passes are timed apart. The binomial sampler's table comes from a shader storage buffer
+// (GLINT_BINOMIAL_TABLE_BINDING, glint::glsl_binomial_table()); --const-table compiles it as
+// binomial.glsl's constant array instead, for comparison. --egl picks the EGL platform to try
 // first. --pragma adds "#pragma TEXT" to every fragment and compute shader ("--pragma none" drops those given
 // before it). On an H200 (driver 580.159.04, docs/gpu.md) NVIDIA's compiler, unrolling the
 // kernels' loops as it does by default, took 68 s over lights.frag and 35 s over ibl.frag (its
@@ -58,8 +61,8 @@ namespace {
     std::fprintf(stderr,
                  "glint_gl: %s\n"
                  "usage: glint_gl [--size WxH] [--frames N] [--warmup N] [--scenes point,sun,area,ibl4,ibl8] [--deferred]\n"
-                 "                [--compare] [--no-images] [--env PATH.exr] [--out DIR] [--egl surfaceless|device|default]\n"
-                 "                [--pragma TEXT]...\n",
+                 "                [--const-table] [--compare] [--no-images] [--env PATH.exr] [--out DIR]\n"
+                 "                [--egl surfaceless|device|default] [--pragma TEXT]...\n",
                  problem.c_str());
     std::exit(2);
 }
@@ -70,6 +73,7 @@ struct settings {
     std::vector<std::string> scenes{"point", "sun", "area", "ibl4", "ibl8"};
     bool compare = false, images = true;
     bool deferred = false;  // a G-buffer raster pass, then a compute shading pass
+    bool const_table = false;  // the binomial sampler's table as binomial.glsl's constant array, not a buffer
     std::string env = std::string(GLINT_DATA_DIR) + "/envmaps/sunset.exr";
     std::string out;
     std::string egl = "surfaceless";
@@ -89,6 +93,7 @@ settings parse(int argc, char** argv) {
         else if (a == "--warmup") s.warmup = static_cast<int>(parse_float(a, value(), 1, 100000, usage));  // llvmpipe's first timer query is garbage
         else if (a == "--compare") s.compare = true;
         else if (a == "--deferred") s.deferred = true;
+        else if (a == "--const-table") s.const_table = true;
         else if (a == "--no-images") s.images = false;
         else if (a == "--env") s.env = value();
         else if (a == "--out") s.out = value();
@@ -140,6 +145,9 @@ GLuint compile(GLenum type, const std::string& source, const std::string& what) 
 
 // The binomial sampler the shaders are compiled for: the showcase's (lights_scene.hpp).
 constexpr glint::binomial_variant shader_variant = glint::binomial_variant::unbiased;
+// The shader storage binding of the sampler's table (glint::glsl_binomial_table()); the IBL's
+// environment takes 0 and 1 (common.glsl).
+constexpr GLuint table_binding = 2;
 
 // What a scene program does: shade (the forward pass), shade and write the G-buffer (--compare's
 // forward frames), write the G-buffer only (the deferred raster pass), or shade the G-buffer (the
@@ -148,11 +156,11 @@ enum class pass { shade, shade_and_gbuffer, gbuffer, deferred_shading };
 
 constexpr const char* version_line = "#version 450\n";
 
-// A shader's source: the pragmas and #defines, the glint kernel files (in glint::glsl_kernel_names()
-// order), common.glsl, then the given files.
-std::string shader_text(bool ibl, bool glints, pass what, const std::vector<std::string>& pragmas, const std::vector<std::string>& files) {
+// A shader's source: the preamble's lines (pragmas, the table's binding), the #defines, the glint
+// kernel files (in glint::glsl_kernel_names() order), common.glsl, then the given files.
+std::string shader_text(bool ibl, bool glints, pass what, const std::vector<std::string>& preamble, const std::vector<std::string>& files) {
     std::string text = version_line;
-    for (const auto& p : pragmas) text += "#pragma " + p + "\n";
+    for (const auto& line : preamble) text += line + "\n";
     const auto define = [&](const char* name, bool on) { text += std::string("#define ") + name + (on ? " 1\n" : " 0\n"); };
     define("GLINT_GL_IBL", ibl);
     define("GLINT_GL_GLINTS", glints);
@@ -180,16 +188,16 @@ GLuint link(const std::vector<GLuint>& shaders, const std::string& what) {
 }
 
 // A raster program: a vertex shader and a fragment shader (with the kernels, for `what`).
-GLuint program(const std::string& vertex, const std::string& fragment, bool ibl, bool glints, pass what, const std::vector<std::string>& pragmas) {
+GLuint program(const std::string& vertex, const std::string& fragment, bool ibl, bool glints, pass what, const std::vector<std::string>& preamble) {
     const GLuint v = compile(GL_VERTEX_SHADER, version_line + glint_gl::shader_source(vertex), vertex);
-    const GLuint f = compile(GL_FRAGMENT_SHADER, shader_text(ibl, glints, what, pragmas, {fragment}), fragment);
+    const GLuint f = compile(GL_FRAGMENT_SHADER, shader_text(ibl, glints, what, preamble, {fragment}), fragment);
     return link({v, f}, vertex + " + " + fragment);
 }
 
 // The deferred shading pass: deferred.comp after the scene's fragment file, whose shading
 // functions it calls.
-GLuint compute_program(const std::string& fragment, bool ibl, bool glints, const std::vector<std::string>& pragmas) {
-    const GLuint c = compile(GL_COMPUTE_SHADER, shader_text(ibl, glints, pass::deferred_shading, pragmas, {fragment, "deferred.comp"}), "deferred.comp");
+GLuint compute_program(const std::string& fragment, bool ibl, bool glints, const std::vector<std::string>& preamble) {
+    const GLuint c = compile(GL_COMPUTE_SHADER, shader_text(ibl, glints, pass::deferred_shading, preamble, {fragment, "deferred.comp"}), "deferred.comp");
     return link({c}, fragment + " + deferred.comp");
 }
 
@@ -397,14 +405,14 @@ double seconds_since(std::chrono::steady_clock::time_point t0) {
 // Compiles and links the programs of the lights scenes and / or the IBL scenes, naming each before
 // it starts and giving its time (a driver's compiler can take long over the inlined kernels; the
 // time is the driver's, not the frame's).
-programs make_programs(bool lights, bool ibl_scenes, bool deferred, bool gbuffer, const std::vector<std::string>& pragmas) {
+programs make_programs(bool lights, bool ibl_scenes, bool deferred, bool gbuffer, const std::vector<std::string>& preamble) {
     const auto build = [&](const char* vertex, const char* fragment, bool ibl, bool glints, pass what) {
         static const char* const what_names[] = {"", ", G-buffer", ", G-buffer only", ", deferred shading"};
         std::printf("glint_gl: compiling %s (%s, %s%s)...\n", what == pass::deferred_shading ? "deferred.comp" : fragment, ibl ? "IBL" : "lights",
                     glints ? "glints" : "smooth", what_names[static_cast<int>(what)]);
         const auto t0 = std::chrono::steady_clock::now();
-        const GLuint p = what == pass::deferred_shading ? compute_program(fragment, ibl, glints, pragmas)
-                                                        : program(vertex, fragment, ibl, glints, what, pragmas);
+        const GLuint p = what == pass::deferred_shading ? compute_program(fragment, ibl, glints, preamble)
+                                                        : program(vertex, fragment, ibl, glints, what, preamble);
         std::printf("glint_gl: compiled in %.2f s\n", seconds_since(t0));
         return p;
     };
@@ -605,7 +613,18 @@ int main(int argc, char** argv) {
                 genv[K] = upload(*envs[K]);
             }
         }
-        const programs progs = make_programs(lights, need[4] || need[8], opt.deferred, opt.compare, opt.pragmas);
+        // The shaders' preamble: the pragmas, and where the binomial sampler's table is read from.
+        std::vector<std::string> preamble;
+        for (const auto& text : opt.pragmas) preamble.push_back("#pragma " + text);
+        GLuint table_buffer = 0;
+        if (!opt.const_table) {
+            const std::vector<float> table = glint::glsl_binomial_table();
+            glCreateBuffers(1, &table_buffer);
+            glNamedBufferData(table_buffer, static_cast<GLsizeiptr>(table.size() * sizeof(float)), table.data(), GL_STATIC_DRAW);
+            glBindBufferBase(GL_SHADER_STORAGE_BUFFER, table_binding, table_buffer);
+            preamble.push_back("#define GLINT_BINOMIAL_TABLE_BINDING " + std::to_string(table_binding));
+        }
+        const programs progs = make_programs(lights, need[4] || need[8], opt.deferred, opt.compare, preamble);
         std::printf("glint_gl: [%.1f s] drawing\n", seconds_since(start));
         const mesh m = make_mesh();
         const target t = make_target(opt.width, opt.height);
@@ -772,7 +791,8 @@ int main(int argc, char** argv) {
                                   "plane), the median over the frames; wall ms adds the query's wait and glFinish. ")
                << "Every scene is drawn with glints and with the smooth BRDF of the same scene, each by its own programs (the smooth ones "
                   "compiled without the glint code; the IBL's smooth frame reads the radiance only).\n\n"
-               << "Device: " << device << " (OpenGL " << glint_gl::gl_context::version() << "), " << opt.width << "x" << opt.height << ", median of "
+               << "The binomial sampler's table: " << (opt.const_table ? "binomial.glsl's constant array (--const-table)" : "a shader storage buffer")
+               << ".\n\nDevice: " << device << " (OpenGL " << glint_gl::gl_context::version() << "), " << opt.width << "x" << opt.height << ", median of "
                << opt.frames << " frames after " << opt.warmup << " warm-up.\n\n"
                << timings.str();
         const auto ratio = [&](const char* a, bool a_smooth, const char* b, bool b_smooth) {

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include <glint/binomial.hpp>
+#include <glint/glsl.hpp>
 #include <glint/multinomial.hpp>
 #include <glint/testing/binomial_metrics.hpp>
 
@@ -114,6 +115,49 @@ TEST_CASE("binomial kernels: GLINT_BINOMIAL_VARIANT and _POW_METHOD fix the samp
                                                                           << s.flips << " flipped (rate " << rate << ")");
         if (fixed) CHECK(rate <= BINOMIAL_GLSL_MAX_FLIP_RATE);
         else CHECK(rate > 0.1);
+    }
+}
+
+TEST_CASE("binomial kernels: the far-bound table read from a buffer (GLINT_BINOMIAL_TABLE_DECLARED) draws as C++") {
+    // glint::glsl_binomial_table() in a shader storage buffer instead of binomial.glsl's constant
+    // array (glint_gl's default), at the grid's points with N from 3 to 40, where the middle reads
+    // the table (N from 4 to 32), 64 uniform pairs each: the same flip-rate bound as the constant
+    // array's test above. The table shifted by one node (two floats) must be caught.
+    std::vector<std::uint32_t> in;
+    std::vector<float> Ns, ps, u1s, u2s;
+    for (double N : gt::binomial_grid_n()) {
+        if (N < 3 || N > 40) continue;
+        for (double p : gt::binomial_grid_p())
+            for (std::uint32_t s = 0; s < 64; ++s) {
+                const glm::uvec3 h = glint::pcg3d(glm::uvec3(s, 0x7cu, static_cast<std::uint32_t>(Ns.size())));
+                Ns.push_back(static_cast<float>(N)), ps.push_back(static_cast<float>(p));
+                u1s.push_back(glint::open_unit_from_bits<float>(h.x)), u2s.push_back(glint::open_unit_from_bits<float>(h.y));
+                glint_test::append_words(in, {Ns.back(), ps.back(), u1s.back(), u2s.back()});
+            }
+    }
+    REQUIRE(Ns.size() >= 1000u);
+    const std::string body =
+        "float N = in_float(4u*i), p = in_float(4u*i+1u), u1 = in_float(4u*i+2u), u2 = in_float(4u*i+3u);"
+        " glint_binomial r = glint_binomial_variant(4, N, p, u1, u2, 2);"
+        " out0[2u*i] = floatBitsToUint(r.positive); out0[2u*i+1u] = floatBitsToUint(r.negative);";
+    const std::vector<float> table = glint::glsl_binomial_table();
+    REQUIRE(table.size() == 3364u);
+    for (bool shifted : {false, true}) {
+        std::vector<float> data = table;
+        if (shifted) std::rotate(data.begin(), data.begin() + 2, data.end());
+        const auto gpu = glint_test::from_words<float>(glint_test::map_words_with_data(
+            {"core.glsl"}, "binomial.glsl", "GLINT_BINOMIAL_FAR_TABLE", "GLINT_BINOMIAL_TABLE_DECLARED", body, in, glint_test::to_words(data), Ns.size(), 2));
+        parity s;
+        for (std::size_t i = 0; i < Ns.size(); ++i) {
+            const auto c = glint::binomial_unbiased(Ns[i], ps[i], u1s[i], u2s[i]);
+            tally(s, gpu[2 * i], c.positive, Ns[i]);
+            tally(s, gpu[2 * i + 1], c.negative, Ns[i]);
+        }
+        const double rate = static_cast<double>(s.flips) / static_cast<double>(s.count);
+        MESSAGE(std::string(shifted ? "table shifted by one node" : "table from glsl_binomial_table()") << ": " << s.count << " counts, " << s.identical
+                                                                                                        << " identical, " << s.flips << " flipped (rate " << rate << ")");
+        if (shifted) CHECK(rate > 10 * BINOMIAL_GLSL_MAX_FLIP_RATE);  // 70 of 9728 counts when written
+        else CHECK(rate <= BINOMIAL_GLSL_MAX_FLIP_RATE);
     }
 }
 

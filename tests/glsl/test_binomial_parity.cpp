@@ -27,6 +27,7 @@ struct parity {
     std::size_t count = 0, identical = 0, flips = 0;
     double max_difference = 0;  // over the counts that did not flip, relative to max(N, 1)
     float worst_gpu = 0, worst_cpu = 0, worst_n = 0;
+    double rate() const { return static_cast<double>(flips) / static_cast<double>(count); }
 };
 
 // A count is identical, or agrees (within BINOMIAL_GLSL_AGREEMENT of max(N, 1)), or flipped.
@@ -36,6 +37,20 @@ void tally(parity& s, float gpu, float cpu, float N) {
     s.identical += gpu == cpu;
     if (d > BINOMIAL_GLSL_AGREEMENT) ++s.flips;
     else if (d > s.max_difference) s.max_difference = d, s.worst_gpu = gpu, s.worst_cpu = cpu, s.worst_n = N;
+}
+
+// Two GLSL counts per input against C++'s binomial_unbiased: its positive count, then its
+// negative count (or its positive count again, where the shader's second word holds another
+// entry point's positive count).
+parity tally_unbiased(const std::vector<float>& gpu, const std::vector<float>& Ns, const std::vector<float>& ps, const std::vector<float>& u1s,
+                      const std::vector<float>& u2s, bool second_is_negative) {
+    parity s;
+    for (std::size_t i = 0; i < Ns.size(); ++i) {
+        const auto c = glint::binomial_unbiased(Ns[i], ps[i], u1s[i], u2s[i]);
+        tally(s, gpu[2 * i], c.positive, Ns[i]);
+        tally(s, gpu[2 * i + 1], second_is_negative ? c.negative : c.positive, Ns[i]);
+    }
+    return s;
 }
 
 }  // namespace
@@ -104,13 +119,8 @@ TEST_CASE("binomial kernels: GLINT_BINOMIAL_VARIANT and _POW_METHOD fix the samp
         std::vector<std::string> files = {"core.glsl", "binomial.glsl"};
         if (fixed) files.insert(files.begin(), {"#define GLINT_BINOMIAL_VARIANT 4", "#define GLINT_BINOMIAL_POW_METHOD 2"});
         const auto gpu = glint_test::from_words<float>(glint_test::map_words(files, body, in, Ns.size(), 2));
-        parity s;
-        for (std::size_t i = 0; i < Ns.size(); ++i) {
-            const auto c = glint::binomial_unbiased(Ns[i], ps[i], u1s[i], u2s[i]);
-            tally(s, gpu[2 * i], c.positive, Ns[i]);
-            tally(s, gpu[2 * i + 1], c.positive, Ns[i]);
-        }
-        const double rate = static_cast<double>(s.flips) / static_cast<double>(s.count);
+        const parity s = tally_unbiased(gpu, Ns, ps, u1s, u2s, false);
+        const double rate = s.rate();
         MESSAGE(std::string(fixed ? "fixed by the macros" : "without them (ungated)") << ": " << s.count << " counts, " << s.identical << " identical, "
                                                                           << s.flips << " flipped (rate " << rate << ")");
         if (fixed) CHECK(rate <= BINOMIAL_GLSL_MAX_FLIP_RATE);
@@ -147,13 +157,8 @@ TEST_CASE("binomial kernels: the far-bound table read from a buffer (GLINT_BINOM
         if (shifted) std::rotate(data.begin(), data.begin() + 2, data.end());
         const auto gpu = glint_test::from_words<float>(glint_test::map_words_with_data(
             {"core.glsl"}, "binomial.glsl", "GLINT_BINOMIAL_FAR_TABLE", "GLINT_BINOMIAL_TABLE_DECLARED", body, in, glint_test::to_words(data), Ns.size(), 2));
-        parity s;
-        for (std::size_t i = 0; i < Ns.size(); ++i) {
-            const auto c = glint::binomial_unbiased(Ns[i], ps[i], u1s[i], u2s[i]);
-            tally(s, gpu[2 * i], c.positive, Ns[i]);
-            tally(s, gpu[2 * i + 1], c.negative, Ns[i]);
-        }
-        const double rate = static_cast<double>(s.flips) / static_cast<double>(s.count);
+        const parity s = tally_unbiased(gpu, Ns, ps, u1s, u2s, true);
+        const double rate = s.rate();
         MESSAGE(std::string(shifted ? "table shifted by one node" : "table from glsl_binomial_table()") << ": " << s.count << " counts, " << s.identical
                                                                                                         << " identical, " << s.flips << " flipped (rate " << rate << ")");
         if (shifted) CHECK(rate > 10 * BINOMIAL_GLSL_MAX_FLIP_RATE);  // 70 of 9728 counts when written

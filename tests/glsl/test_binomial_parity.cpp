@@ -39,16 +39,40 @@ void tally(parity& s, float gpu, float cpu, float N) {
     else if (d > s.max_difference) s.max_difference = d, s.worst_gpu = gpu, s.worst_cpu = cpu, s.worst_n = N;
 }
 
+// The draws' inputs: every grid point with N in [N_min, N_max], `pairs` uniform pairs each from
+// pcg3d(pair, salt, draw index), as floats and as the shader's input words (N, p, u1, u2).
+struct draw_inputs {
+    std::vector<std::uint32_t> words;
+    std::vector<float> Ns, ps, u1s, u2s;
+};
+
+draw_inputs grid_inputs(std::uint32_t pairs, std::uint32_t salt, double N_min = 0, double N_max = 1e300) {
+    draw_inputs d;
+    for (double N : gt::binomial_grid_n()) {
+        if (N < N_min || N > N_max) continue;
+        for (double p : gt::binomial_grid_p())
+            for (std::uint32_t s = 0; s < pairs; ++s) {
+                const glm::uvec3 h = glint::pcg3d(glm::uvec3(s, salt, static_cast<std::uint32_t>(d.Ns.size())));
+                d.Ns.push_back(static_cast<float>(N)), d.ps.push_back(static_cast<float>(p));
+                d.u1s.push_back(glint::open_unit_from_bits<float>(h.x)), d.u2s.push_back(glint::open_unit_from_bits<float>(h.y));
+                glint_test::append_words(d.words, {d.Ns.back(), d.ps.back(), d.u1s.back(), d.u2s.back()});
+            }
+    }
+    return d;
+}
+
+// The shader's reading of draw i's inputs (grid_inputs' words).
+const std::string read_inputs = "float N = in_float(4u*i), p = in_float(4u*i+1u), u1 = in_float(4u*i+2u), u2 = in_float(4u*i+3u);";
+
 // Two GLSL counts per input against C++'s binomial_unbiased: its positive count, then its
 // negative count (or its positive count again, where the shader's second word holds another
 // entry point's positive count).
-parity tally_unbiased(const std::vector<float>& gpu, const std::vector<float>& Ns, const std::vector<float>& ps, const std::vector<float>& u1s,
-                      const std::vector<float>& u2s, bool second_is_negative) {
+parity tally_unbiased(const std::vector<float>& gpu, const draw_inputs& d, bool second_is_negative) {
     parity s;
-    for (std::size_t i = 0; i < Ns.size(); ++i) {
-        const auto c = glint::binomial_unbiased(Ns[i], ps[i], u1s[i], u2s[i]);
-        tally(s, gpu[2 * i], c.positive, Ns[i]);
-        tally(s, gpu[2 * i + 1], second_is_negative ? c.negative : c.positive, Ns[i]);
+    for (std::size_t i = 0; i < d.Ns.size(); ++i) {
+        const auto c = glint::binomial_unbiased(d.Ns[i], d.ps[i], d.u1s[i], d.u2s[i]);
+        tally(s, gpu[2 * i], c.positive, d.Ns[i]);
+        tally(s, gpu[2 * i + 1], second_is_negative ? c.negative : c.positive, d.Ns[i]);
     }
     return s;
 }
@@ -56,27 +80,17 @@ parity tally_unbiased(const std::vector<float>& gpu, const std::vector<float>& N
 }  // namespace
 
 TEST_CASE("binomial kernels: GLSL against C++ over the grid, 256 uniform pairs per point, every variant") {
-    std::vector<std::uint32_t> in;
-    std::vector<float> Ns, ps, u1s, u2s;
-    for (double N : gt::binomial_grid_n())
-        for (double p : gt::binomial_grid_p())
-            for (std::uint32_t s = 0; s < 256; ++s) {
-                const glm::uvec3 h = glint::pcg3d(glm::uvec3(s, 0x9au, static_cast<std::uint32_t>(Ns.size())));
-                Ns.push_back(static_cast<float>(N)), ps.push_back(static_cast<float>(p));
-                u1s.push_back(glint::open_unit_from_bits<float>(h.x)), u2s.push_back(glint::open_unit_from_bits<float>(h.y));
-            }
-    for (std::size_t i = 0; i < Ns.size(); ++i)
-        glint_test::append_words(in, {Ns[i], ps[i], u1s[i], u2s[i]});
+    const draw_inputs d = grid_inputs(256, 0x9au);
+    const std::vector<float>&Ns = d.Ns, &ps = d.ps, &u1s = d.u1s, &u2s = d.u2s;
     for (binomial_variant v : {binomial_variant::ungated, binomial_variant::gated_db23, binomial_variant::gated,
                                binomial_variant::dual_gated, binomial_variant::unbiased}) {
         const int method = static_cast<int>(glint::published_pow_method(v));
         const std::string body =
-            "float N = in_float(4u*i), p = in_float(4u*i+1u), u1 = in_float(4u*i+2u), u2 = in_float(4u*i+3u);"
-            " glint_binomial r = glint_binomial_variant(" + std::to_string(static_cast<int>(v)) + ", N, p, u1, u2, " +
+            read_inputs + " glint_binomial r = glint_binomial_variant(" + std::to_string(static_cast<int>(v)) + ", N, p, u1, u2, " +
             std::to_string(method) + ");"
             " out0[2u*i] = floatBitsToUint(r.positive); out0[2u*i+1u] = floatBitsToUint(r.negative);";
         const auto gpu = glint_test::from_words<float>(
-            glint_test::map_words({"core.glsl", "binomial.glsl"}, body, in, Ns.size(), 2));
+            glint_test::map_words({"core.glsl", "binomial.glsl"}, body, d.words, Ns.size(), 2));
         parity s;
         std::size_t non_finite = 0;
         for (std::size_t i = 0; i < Ns.size(); ++i) {
@@ -85,7 +99,7 @@ TEST_CASE("binomial kernels: GLSL against C++ over the grid, 256 uniform pairs p
             tally(s, gpu[2 * i], c.positive, Ns[i]);
             tally(s, gpu[2 * i + 1], c.negative, Ns[i]);
         }
-        const double rate = static_cast<double>(s.flips) / static_cast<double>(s.count);
+        const double rate = s.rate();
         MESSAGE(std::string(glint::name(v)) << ": " << s.count << " counts, " << s.identical << " identical, " << s.flips
                                             << " flipped (rate " << rate << "), the others within " << s.max_difference << " of max(N, 1) (" << s.worst_gpu << " against "
                        << s.worst_cpu << " at N = " << s.worst_n << ")");
@@ -99,27 +113,17 @@ TEST_CASE("binomial kernels: GLINT_BINOMIAL_VARIANT and _POW_METHOD fix the samp
     // defined (the mean-preserving sampler, log1p) both entry points must draw as C++'s
     // binomial_unbiased, within the same flip rate as the test above. Without them the same shader
     // draws the ungated sampler, which the comparison must catch.
-    std::vector<std::uint32_t> in;
-    std::vector<float> Ns, ps, u1s, u2s;
-    for (double N : gt::binomial_grid_n())
-        for (double p : gt::binomial_grid_p())
-            for (std::uint32_t s = 0; s < 16; ++s) {
-                const glm::uvec3 h = glint::pcg3d(glm::uvec3(s, 0x5bu, static_cast<std::uint32_t>(Ns.size())));
-                Ns.push_back(static_cast<float>(N)), ps.push_back(static_cast<float>(p));
-                u1s.push_back(glint::open_unit_from_bits<float>(h.x)), u2s.push_back(glint::open_unit_from_bits<float>(h.y));
-                glint_test::append_words(in, {Ns.back(), ps.back(), u1s.back(), u2s.back()});
-            }
+    const draw_inputs d = grid_inputs(16, 0x5bu);
     const std::string body =
-        "float N = in_float(4u*i), p = in_float(4u*i+1u), u1 = in_float(4u*i+2u), u2 = in_float(4u*i+3u);"
-        " glint_binomial r = glint_binomial_variant(0, N, p, u1, u2, 0);"
+        read_inputs + " glint_binomial r = glint_binomial_variant(0, N, p, u1, u2, 0);"
         " glint_binomial_cache cache = glint_binomial_empty_cache();"
         " glint_binomial c = glint_binomial_variant_cached(0, N, p, u1, u2, 0, cache);"
         " out0[2u*i] = floatBitsToUint(r.positive); out0[2u*i+1u] = floatBitsToUint(c.positive);";
     for (bool fixed : {true, false}) {
         std::vector<std::string> files = {"core.glsl", "binomial.glsl"};
         if (fixed) files.insert(files.begin(), {"#define GLINT_BINOMIAL_VARIANT 4", "#define GLINT_BINOMIAL_POW_METHOD 2"});
-        const auto gpu = glint_test::from_words<float>(glint_test::map_words(files, body, in, Ns.size(), 2));
-        const parity s = tally_unbiased(gpu, Ns, ps, u1s, u2s, false);
+        const auto gpu = glint_test::from_words<float>(glint_test::map_words(files, body, d.words, d.Ns.size(), 2));
+        const parity s = tally_unbiased(gpu, d, false);
         const double rate = s.rate();
         MESSAGE(std::string(fixed ? "fixed by the macros" : "without them (ungated)") << ": " << s.count << " counts, " << s.identical << " identical, "
                                                                           << s.flips << " flipped (rate " << rate << ")");
@@ -133,22 +137,10 @@ TEST_CASE("binomial kernels: the far-bound table read from a buffer (GLINT_BINOM
     // array (glint_gl's default), at the grid's points with N from 3 to 40, where the middle reads
     // the table (N from 4 to 32), 64 uniform pairs each: the same flip-rate bound as the constant
     // array's test above. The table shifted by one node (two floats) must be caught.
-    std::vector<std::uint32_t> in;
-    std::vector<float> Ns, ps, u1s, u2s;
-    for (double N : gt::binomial_grid_n()) {
-        if (N < 3 || N > 40) continue;
-        for (double p : gt::binomial_grid_p())
-            for (std::uint32_t s = 0; s < 64; ++s) {
-                const glm::uvec3 h = glint::pcg3d(glm::uvec3(s, 0x7cu, static_cast<std::uint32_t>(Ns.size())));
-                Ns.push_back(static_cast<float>(N)), ps.push_back(static_cast<float>(p));
-                u1s.push_back(glint::open_unit_from_bits<float>(h.x)), u2s.push_back(glint::open_unit_from_bits<float>(h.y));
-                glint_test::append_words(in, {Ns.back(), ps.back(), u1s.back(), u2s.back()});
-            }
-    }
-    REQUIRE(Ns.size() >= 1000u);
+    const draw_inputs d = grid_inputs(64, 0x7cu, 3, 40);
+    REQUIRE(d.Ns.size() >= 1000u);
     const std::string body =
-        "float N = in_float(4u*i), p = in_float(4u*i+1u), u1 = in_float(4u*i+2u), u2 = in_float(4u*i+3u);"
-        " glint_binomial r = glint_binomial_variant(4, N, p, u1, u2, 2);"
+        read_inputs + " glint_binomial r = glint_binomial_variant(4, N, p, u1, u2, 2);"
         " out0[2u*i] = floatBitsToUint(r.positive); out0[2u*i+1u] = floatBitsToUint(r.negative);";
     const std::vector<float> table = glint::glsl_binomial_table();
     REQUIRE(table.size() == 3364u);
@@ -156,8 +148,8 @@ TEST_CASE("binomial kernels: the far-bound table read from a buffer (GLINT_BINOM
         std::vector<float> data = table;
         if (shifted) std::rotate(data.begin(), data.begin() + 2, data.end());
         const auto gpu = glint_test::from_words<float>(glint_test::map_words_with_data(
-            {"core.glsl"}, "binomial.glsl", "GLINT_BINOMIAL_FAR_TABLE", "GLINT_BINOMIAL_TABLE_DECLARED", body, in, glint_test::to_words(data), Ns.size(), 2));
-        const parity s = tally_unbiased(gpu, Ns, ps, u1s, u2s, true);
+            {"core.glsl"}, "binomial.glsl", "GLINT_BINOMIAL_FAR_TABLE", "GLINT_BINOMIAL_TABLE_DECLARED", body, d.words, glint_test::to_words(data), d.Ns.size(), 2));
+        const parity s = tally_unbiased(gpu, d, true);
         const double rate = s.rate();
         MESSAGE(std::string(shifted ? "table shifted by one node" : "table from glsl_binomial_table()") << ": " << s.count << " counts, " << s.identical
                                                                                                         << " identical, " << s.flips << " flipped (rate " << rate << ")");
@@ -195,7 +187,7 @@ TEST_CASE("multinomial kernel: GLSL against C++, K = 4 and 8") {
             for (int k = 0; k < 8; ++k) tally(s, gpu[9 * i + static_cast<std::size_t>(k)], c.count[k], Ns[i]);
             tally(s, gpu[9 * i + 8], c.rest, Ns[i]);
         }
-        const double rate = static_cast<double>(s.flips) / static_cast<double>(s.count);
+        const double rate = s.rate();
         MESSAGE("K = " << K << ": " << s.count << " counts, " << s.identical << " identical, " << s.flips << " flipped (rate "
                        << rate << "), the others within " << s.max_difference << " of max(N, 1) (" << s.worst_gpu << " against "
                        << s.worst_cpu << " at N = " << s.worst_n << ")");

@@ -136,6 +136,19 @@ grid_pixel<real> grid_pixel_setup(const vec2_t<real>& uv, const vec2_t<real>& du
     return detail::glsl::kernels<real>::glint_grid_pixel_setup(uv, duvdx, duvdy, detail::to_kernel(g));
 }
 
+// The same footprint on one of its four lattice points, drawn with probability w_L from the
+// caller's uniform lattice_u in [0, 1) (above: just below 1; negative: all four points, as
+// above), whose triangle vertices draw with the
+// whole N: the same mean and, for binomial draws, the same variance per pixel as the four points
+// together, at 3 vertices instead of up to 12 (stochastic texture filtering of KK25's lattice
+// interpolation; kernels/grid.glsl, glint_grid_pixel_setup_stochastic, says what changes across
+// pixels; docs/grid.md measures the cost). Use it with grid_sample(px, ...) and ibl_sample(px, ...).
+template <class real>
+grid_pixel<real> grid_pixel_setup(const vec2_t<real>& uv, const vec2_t<real>& duvdx, const vec2_t<real>& duvdy, const grid_params<real>& g,
+                                  real lattice_u) {
+    return detail::glsl::kernels<real>::glint_grid_pixel_setup_stochastic(uv, duvdx, duvdy, detail::to_kernel(g), lattice_u);
+}
+
 template <class real>
 grid_estimate<real> grid_sample(grid_pixel<real>& px, const grid_params<real>& g, const grid_light<real>& light) {
     return detail::glsl::kernels<real>::glint_grid_sample_pixel(px, detail::to_kernel(g), light);

@@ -128,7 +128,7 @@ TEST_CASE("D_Omega kernels: GLSL against C++ for cones and rectangles") {
     CHECK(rect < D_OMEGA_GLSL_MAX_RELATIVE);
 }
 
-TEST_CASE("grid estimate: GLSL against C++ for point and extended lights, every variant") {
+TEST_CASE("grid estimate: GLSL against C++ for point and extended lights, every variant, and on one lattice point per pixel") {
     const std::size_t n = 20000;
     std::vector<std::uint32_t> in;
     for (std::uint32_t i = 0; i < n; ++i) {
@@ -141,17 +141,22 @@ TEST_CASE("grid estimate: GLSL against C++ for point and extended lights, every 
                                0.4f * rnd(i, 16)});
     }
     using K = glint::detail::glsl::kernels<float>;
-    for (int v = 0; v <= 4; ++v) {
+    // v = 5: the mean-preserving sampler on one lattice point per pixel (glint_grid_pixel_setup_stochastic).
+    for (int v = 0; v <= 5; ++v) {
+        const bool stochastic = v == 5;
+        const int variant = std::min(v, 4);
+        const std::string estimate = stochastic ? " glint_grid_pixel px = glint_grid_pixel_setup_stochastic(uv, dx, dy, g, glint_unit_from_bits(glint_hash_u32(i * 2654435761u)));"
+                                                  " glint_grid_estimate e = glint_grid_sample_pixel(px, g, l);"
+                                                : " glint_grid_estimate e = glint_grid_sample(uv, dx, dy, g, l);";
         const std::string body =
             "uint b = 11u * i; vec2 uv = in_vec2(b); vec2 dx = in_vec2(b+2u); vec2 dy = in_vec2(b+4u); vec3 h = in_vec3(b+6u);"
             " glint_grid_params g; g.log_density = in_float(b+9u); g.density_sigma = ((i & 2u) != 0u) ? 0.3 : 0.0;"
-            " g.lod_scale = 1.5; g.slope_cell = 0.02; g.smooth_tolerance = 0.0; g.variant = " + std::to_string(v) +
-            "; g.pow_method = " + std::to_string(static_cast<int>(glint::published_pow_method(static_cast<glint::binomial_variant>(v)))) +
+            " g.lod_scale = 1.5; g.slope_cell = 0.02; g.smooth_tolerance = 0.0; g.variant = " + std::to_string(variant) +
+            "; g.pow_method = " + std::to_string(static_cast<int>(glint::published_pow_method(static_cast<glint::binomial_variant>(variant)))) +
             "; g.seed = i * 747796405u;"
             " glint_grid_light l; l.kind = int(i & 1u); l.p = in_float(b+10u); l.slope = -h.xy / h.z; l.ndf = 0;"
             " l.alpha = vec2(0.2, 0.1); l.total_area = glint_total_area(0, l.alpha);"
-            " glint_grid_estimate e = glint_grid_sample(uv, dx, dy, g, l);"
-            " out0[2u*i] = floatBitsToUint(e.value); out0[2u*i+1u] = floatBitsToUint(e.expected);";
+            + estimate + " out0[2u*i] = floatBitsToUint(e.value); out0[2u*i+1u] = floatBitsToUint(e.expected);";
         const auto gpu = glint_test::from_words<float>(glint_test::map_words(grid_files, body, in, n, 2));
         std::size_t differing = 0, non_finite = 0, identical = 0;
         double worst_expected = 0, worst_agreeing = 0;
@@ -159,12 +164,19 @@ TEST_CASE("grid estimate: GLSL against C++ for point and extended lights, every 
             const auto w = glint_test::from_words<float>(std::vector<std::uint32_t>(in.begin() + 11 * i, in.begin() + 11 * i + 11));
             K::glint_grid_params g;
             g.log_density = w[9], g.density_sigma = (i & 2u) ? 0.3f : 0.0f, g.lod_scale = 1.5f, g.slope_cell = 0.02f, g.smooth_tolerance = 0.0f;
-            g.variant = v, g.pow_method = static_cast<int>(glint::published_pow_method(static_cast<glint::binomial_variant>(v)));
+            g.variant = variant, g.pow_method = static_cast<int>(glint::published_pow_method(static_cast<glint::binomial_variant>(variant)));
             g.seed = i * 747796405u;
             K::glint_grid_light l;
             l.kind = static_cast<int>(i & 1u), l.p = w[10], l.slope = -glm::vec2(w[6], w[7]) / w[8], l.ndf = 0;
             l.alpha = glm::vec2(0.2f, 0.1f), l.total_area = K::glint_total_area(0, l.alpha);
-            const auto e = K::glint_grid_sample(glm::vec2(w[0], w[1]), glm::vec2(w[2], w[3]), glm::vec2(w[4], w[5]), g, l);
+            K::glint_grid_estimate e;
+            if (stochastic) {
+                auto px = K::glint_grid_pixel_setup_stochastic(glm::vec2(w[0], w[1]), glm::vec2(w[2], w[3]), glm::vec2(w[4], w[5]), g,
+                                                               K::glint_unit_from_bits(K::glint_hash_u32(i * 2654435761u)));
+                e = K::glint_grid_sample_pixel(px, g, l);
+            } else {
+                e = K::glint_grid_sample(glm::vec2(w[0], w[1]), glm::vec2(w[2], w[3]), glm::vec2(w[4], w[5]), g, l);
+            }
             const float gv = gpu[2 * i], ge = gpu[2 * i + 1];
             non_finite += !std::isfinite(gv) || !std::isfinite(ge);
             worst_expected = std::max(worst_expected, std::fabs(static_cast<double>(ge - e.expected)) / std::max(1e-30, static_cast<double>(e.expected)));
@@ -177,7 +189,7 @@ TEST_CASE("grid estimate: GLSL against C++ for point and extended lights, every 
             else worst_agreeing = std::max(worst_agreeing, d);
         }
         const double rate = static_cast<double>(differing) / static_cast<double>(n);
-        MESSAGE(std::string(glint::name(static_cast<glint::binomial_variant>(v)))
+        MESSAGE(std::string(glint::name(static_cast<glint::binomial_variant>(variant))) << std::string(stochastic ? ", one lattice point" : "")
                 << ": " << n << " estimates, " << identical << " identical, " << differing << " differ by more than "
                 << GRID_GLSL_AGREEMENT << " of max(R, E[R]) (rate " << rate << "), the others within " << worst_agreeing
                 << "; E[R] within " << worst_expected);

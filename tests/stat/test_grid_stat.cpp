@@ -70,8 +70,31 @@ struct grid_test_result {
     grid_scene scene;
 };
 
+// How a sample's estimate is made: on the footprint's four lattice points; on one drawn per sample
+// (glint::grid_pixel_setup with a lattice_u); or, a deliberately wrong variant of that, on the drawn
+// point with its vertices' shares left at w_L instead of 1 (E[R] scaled by sum_L w_L^2).
+enum class lattice_mode { all, one, one_unscaled };
+
+glint::grid_estimate<float> estimate_with(const grid_scene& s, lattice_mode mode, std::uint32_t seed, glm::vec2 uv, float lattice_u) {
+    if (mode == lattice_mode::all) return s.estimate(seed, uv);
+    using K = glint::detail::glsl::kernels<float>;
+    glm::vec2 dx, dy;
+    s.derivatives(dx, dy);
+    const auto g = s.params(seed);
+    auto px = glint::grid_pixel_setup(uv, dx, dy, g, lattice_u);
+    if (mode == lattice_mode::one_unscaled) {
+        const auto k = glint::detail::to_kernel(g);
+        K::glint_grid_pixel_vertices(px, k);
+        const auto lat = K::glint_footprint_lattice(px.f, k.lod_scale);
+        const float w = lat.weight[K::glint_lattice_choice(lat, px.lattice_u)];
+        for (int i = 0; i < px.v.count; ++i) px.v.share[i] *= w;  // the skip test's bound, made for share 1, stays safe
+    }
+    return glint::grid_sample(px, g, s.light);
+}
+
 // The grid's tests, or every stride-th of them (each with the seeds it has in the whole grid).
-std::vector<grid_test_result> run_grid(glint::binomial_variant v, double alpha_each, std::size_t& total_samples, std::uint32_t stride = 1) {
+std::vector<grid_test_result> run_grid(glint::binomial_variant v, double alpha_each, std::size_t& total_samples, std::uint32_t stride = 1,
+                                       lattice_mode mode = lattice_mode::all) {
     std::vector<grid_test_result> out;
     std::uint32_t salt = 0;
     for (const grid_scene& s : unbiasedness_grid(v)) {
@@ -82,7 +105,8 @@ std::vector<grid_test_result> run_grid(glint::binomial_variant v, double alpha_e
         for (std::size_t i = 0; i < n; ++i) {
             const glm::uvec3 h = glint::pcg3d(glm::uvec3(static_cast<std::uint32_t>(i), salt, 0x51u));
             const glm::vec2 uv(glint::unit_from_bits<float>(h.x) * 97.0f * s.footprint, glint::unit_from_bits<float>(h.y) * 89.0f * s.footprint);
-            m.add(static_cast<double>(glint::modulation(s.estimate(h.z, uv))));
+            const float lattice_u = glint::unit_from_bits<float>(glint::pcg3d(h).x);
+            m.add(static_cast<double>(glint::modulation(estimate_with(s, mode, h.z, uv, lattice_u))));
         }
         total_samples += n;
         out.push_back({gt::mean_test(m, 1.0, alpha_each), s});
@@ -137,6 +161,37 @@ TEST_CASE("grid: the same test rejects the published gated sampler (DB23) and KK
                                << ": mean " << worst->test.mean << " +- " << worst->test.standard_error);
         CHECK(rejected > 0);
     }
+}
+
+// One lattice point per pixel, drawn with probability w_L from a uniform per sample: every 4th test
+// of the grid (its seeds and sample counts, each test resolving a 10% bias with probability 0.9, at
+// the whole grid's alpha per test, family-wise 0.01 over these by Sidak), unbiased like the four
+// points together; the same tests reject the variant that forgets to give the drawn point's
+// vertices the whole footprint (share w_L instead of 1).
+TEST_CASE("grid: one lattice point per pixel keeps the mean on every 4th test of the grid, and a variant with shares w_L is rejected") {
+    const auto v = glint::binomial_variant::unbiased;
+    const std::size_t tests = unbiasedness_grid(v).size();
+    std::size_t samples = 0, wrong_samples = 0;
+    const double alpha_each = gt::sidak_alpha(0.01, static_cast<int>((tests + 3) / 4));
+    const auto results = run_grid(v, alpha_each, samples, 4, lattice_mode::one);
+    const auto wrong = run_grid(v, alpha_each, wrong_samples, 4, lattice_mode::one_unscaled);
+    int rejected = 0, unresolved = 0, wrong_rejected = 0;
+    double worst_bias = 0;
+    std::string worst;
+    for (const auto& r : results) {
+        rejected += rejects(r.test, alpha_each);
+        unresolved += !r.test.resolves(0.1);
+        if (std::fabs(r.test.mean - 1) > worst_bias) worst_bias = std::fabs(r.test.mean - 1), worst = r.scene.describe();
+        if (rejects(r.test, alpha_each)) MESSAGE(r.scene.describe() << ": mean " << r.test.mean << " +- " << r.test.standard_error);
+    }
+    for (const auto& r : wrong) wrong_rejected += rejects(r.test, alpha_each);
+    MESSAGE(results.size() << " configurations (every 4th of " << tests << "), " << samples << " samples, alpha per test "
+                           << alpha_each << ": " << rejected << " rejected; largest |mean - 1| " << worst_bias << " (" << worst
+                           << "); shares w_L: " << wrong_rejected << " of " << wrong.size() << " rejected");
+    CHECK(results.size() > 75);
+    CHECK(unresolved == 0);
+    CHECK(rejected == 0);
+    CHECK(wrong_rejected > static_cast<int>(wrong.size()) / 4);
 }
 
 namespace {

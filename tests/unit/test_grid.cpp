@@ -427,3 +427,59 @@ TEST_CASE("the grid's bounded floor equals std::floor over its range, in float a
     MESSAGE(xs.size() << " values, " << differ << " differ from std::floor");
     CHECK(differ == 0);
 }
+
+// One lattice point per pixel (glint_grid_pixel_setup_stochastic): at u spread evenly over [0, 1)
+// each lattice point is picked for a share of the u equal to its weight (to 1 / 4096, the u
+// spacing), its three triangle vertices hold the whole footprint (share 1, weights summing to 1),
+// and a negative u gives exactly the four points' estimate.
+TEST_CASE("grid: one lattice point per pixel is picked with probability w_L, draws with share 1, and u < 0 keeps the four points") {
+    const int m = 4096;
+    double worst_share = 0;
+    int pixels = 0, spread = 0, differ = 0;
+    for (std::uint32_t i = 0; i < 300; ++i) {
+        const glm::vec2 r = random_unit(i, 41), q = random_unit(i, 42);
+        glm::vec2 dx, dy;
+        footprint(std::exp2(-4.0f + 12.0f * r.x), std::exp2(5.0f * r.y), 3.1415926f * q.x, dx, dy);
+        const glm::vec2 uv = 50.0f * random_unit(i, 43);
+        glint::grid_params<float> g;
+        g.log_density = 3, g.seed = i;
+        const auto k = glint::detail::to_kernel(g);
+        const auto lat = K::glint_footprint_lattice(K::glint_footprint_from_derivatives(dx, dy), g.lod_scale);
+        double picked[4] = {0, 0, 0, 0};
+        for (int j = 0; j < m; ++j) {
+            const float u = (static_cast<float>(j) + 0.5f) / static_cast<float>(m);
+            const int l = K::glint_lattice_choice(lat, u);
+            REQUIRE(l >= 0);
+            REQUIRE(lat.weight[l] > 0.0f);
+            picked[l] += 1.0 / m;
+            if (j % 512 != 0) continue;
+            auto px = glint::grid_pixel_setup(uv, dx, dy, g, u);
+            K::glint_grid_pixel_vertices(px, k);
+            REQUIRE(px.v.count >= 1);
+            REQUIRE(px.v.count <= 3);
+            float weights = 0;
+            for (int t = 0; t < px.v.count; ++t) {
+                weights += px.v.weight[t];
+                CHECK(px.v.share[t] == 1.0f);
+            }
+            CHECK(std::fabs(weights - 1.0f) < 1e-6f);
+        }
+        int positive = 0;
+        for (int l = 0; l < 4; ++l) {
+            worst_share = std::max(worst_share, std::fabs(picked[l] - static_cast<double>(lat.weight[l])));
+            positive += lat.weight[l] > 0.0f;
+        }
+        spread += positive >= 2;
+        ++pixels;
+        auto all = glint::grid_pixel_setup(uv, dx, dy, g, -1.0f);
+        glint_test::grid_scene s;
+        s.kind = glint_test::light_kind::point, s.prepare();
+        const auto a = glint::grid_sample(all, g, s.light), b = glint::grid_sample(uv, dx, dy, g, s.light);
+        differ += a.value != b.value || a.expected != b.expected || a.draws != b.draws;
+    }
+    MESSAGE(pixels << " footprints (" << spread << " with two or more lattice points): each point picked within " << worst_share
+                   << " of its weight over " << m << " evenly spread u");
+    CHECK(spread > pixels / 2);  // the choice is tested where there is one to make
+    CHECK(worst_share <= 1.0 / m + 1e-6);
+    CHECK(differ == 0);
+}

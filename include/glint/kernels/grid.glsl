@@ -255,7 +255,21 @@ struct glint_grid_vertices {
     uvec3 hash[12];
 };
 
-GLINT_FN glint_grid_vertices glint_footprint_vertices(vec2 uv, glint_footprint f, glint_grid_params g) {
+// lattice_u < 0: every lattice point with its weight w_L (DB23, KK25). lattice_u in [0, 1): one
+// lattice point, drawn with probability w_L by inverting their cumulative weights at lattice_u,
+// with share 1 (glint_grid_pixel_setup_stochastic says why its mean and variance are the same).
+GLINT_FN int glint_lattice_choice(glint_lattice lat, real lattice_u) {
+    int chosen = -1;
+    real below = real(0);
+    for (int l = 0; l < 4; ++l) {
+        if (!(lat.weight[l] > real(0))) continue;
+        if (chosen < 0 || lattice_u >= below) chosen = l;  // the last point whose cumulative start is <= u
+        below += lat.weight[l];
+    }
+    return chosen;
+}
+
+GLINT_FN glint_grid_vertices glint_footprint_vertices(vec2 uv, glint_footprint f, glint_grid_params g, real lattice_u) {
     glint_grid_vertices v;
     v.count = 0;
     for (int i = 0; i < 12; ++i) {
@@ -264,9 +278,14 @@ GLINT_FN glint_grid_vertices glint_footprint_vertices(vec2 uv, glint_footprint f
         v.hash[i] = uvec3(0u);
     }
     glint_lattice lat = glint_footprint_lattice(f, g.lod_scale);
+    int chosen = (lattice_u >= real(0)) ? glint_lattice_choice(lat, lattice_u) : -1;
     for (int l = 0; l < 4; ++l) {
         real wl = lat.weight[l];
         if (!(wl > real(0))) continue;
+        if (chosen >= 0) {
+            if (l != chosen) continue;
+            wl = real(1);
+        }
         vec2 rot = glint_lattice_rotation(lat.level[l], lat.bin[l]);
         vec2 r = vec2(rot.x * uv.x + rot.y * uv.y, -rot.y * uv.x + rot.x * uv.y);
         // Cells 2^lod by 2^(lod + level): exact power-of-two scalings.
@@ -325,6 +344,7 @@ struct glint_grid_pixel {
     vec2 uv;
     glint_footprint f;
     real N;
+    real lattice_u;  // < 0: every lattice point; in [0, 1): the one it picks (glint_grid_pixel_setup_stochastic)
     bool ready;  // whether v holds the vertices
     glint_grid_vertices v;
     real skip_scale[12];  // max(N share, 2) 1.0001 per vertex: the skip test's bound over p, less 1e-5
@@ -337,14 +357,33 @@ GLINT_FN glint_grid_pixel glint_grid_pixel_setup(vec2 uv, vec2 duvdx, vec2 duvdy
     px.uv = uv;
     px.f = glint_footprint_from_derivatives(duvdx, duvdy);
     px.N = glint_footprint_count(g, px.f);
+    px.lattice_u = real(-1);
     px.ready = false;
     px.v.count = 0;  // the arrays are filled by glint_grid_pixel_vertices, before any read
     return px;
 }
 
+// The same footprint on one lattice point instead of four: the point L drawn with probability w_L
+// from the caller's uniform u in [0, 1) (u >= 1 counts as just below 1; u < 0 or NaN keeps all four
+// points, as glint_grid_pixel_setup; a blue-noise or per-frame u suits a renderer that averages
+// pixels or frames), its three triangle vertices drawing with the whole
+// N (share 1, not w_L). Stochastic texture filtering (Pharr et al., "Filtering after shading with
+// stochastic texture filtering", 2024) applied to KK25's lattice interpolation. Per pixel the
+// estimate keeps its mean exactly (each lattice point's R alone has E[R] = sum m_j p_j) and, where
+// the vertices' draws are binomial, its variance too: Var(c) = n p (1 - p) is linear in n, so
+// sum_L w_L Var(sum_t l_t c_Lt / N | share 1) = sum_L Var(sum_t l_t c_Lt / N | share w_L). What
+// changes is across pixels and time: a glint that the interpolation fades in and out as the
+// footprint's LOD, ratio or angle moves shows, per pixel, either wholly or not at all. It costs 3
+// vertices instead of up to 12 (the vertex setup and the skip test's hashes; docs/grid.md).
+GLINT_FN glint_grid_pixel glint_grid_pixel_setup_stochastic(vec2 uv, vec2 duvdx, vec2 duvdy, glint_grid_params g, real u) {
+    glint_grid_pixel px = glint_grid_pixel_setup(uv, duvdx, duvdy, g);
+    px.lattice_u = (u < real(0)) ? real(-1) : min(u, real(0.99999994));  // 1 - 2^-24, below 1 in float
+    return px;
+}
+
 GLINT_FN void glint_grid_pixel_vertices(GLINT_INOUT(glint_grid_pixel) px, glint_grid_params g) {
     if (px.ready) return;
-    px.v = glint_footprint_vertices(px.uv, px.f, g);
+    px.v = glint_footprint_vertices(px.uv, px.f, g, px.lattice_u);
     for (int i = 0; i < 12; ++i) {
         px.skip_scale[i] = max(px.N * px.v.share[i], real(2)) * real(1.0001);
         px.word[i] = px.v.hash[i].x;
@@ -370,12 +409,26 @@ GLINT_FN_OUT_OF_LINE glint_draw_masks glint_skip_test_masks(GLINT_INOUT(glint_gr
                                                              bool skip_test) {
     glint_draw_masks masks;
     for (int i = 0; i < 12; ++i) masks.bits[i] = 0;
-    for (int j = 0; j < 4; ++j) {
-        real p24 = corner_p[j] * real(16777216.0);  // 2^24
-        uint key = corner_key[j];
-        for (int i = 0; i < 12; ++i) {
-            uint word = glint_hash_u32(px.word[i] ^ key);
-            masks.bits[i] |= ((real(int(word >> 8u)) < px.skip_scale[i] * p24 + real(167.77216)) ? 1 : 0) << j;  // 1e-5 2^24
+    // Four vertices where one lattice point has them (glint_grid_pixel_setup_stochastic), else
+    // twelve: each loop with a constant count, which GCC vectorises (a variable count it did not:
+    // 20% more instructions in the point-light frame).
+    if (px.v.count <= 4) {
+        for (int j = 0; j < 4; ++j) {
+            real p24 = corner_p[j] * real(16777216.0);  // 2^24
+            uint key = corner_key[j];
+            for (int i = 0; i < 4; ++i) {
+                uint word = glint_hash_u32(px.word[i] ^ key);
+                masks.bits[i] |= ((real(int(word >> 8u)) < px.skip_scale[i] * p24 + real(167.77216)) ? 1 : 0) << j;  // 1e-5 2^24
+            }
+        }
+    } else {
+        for (int j = 0; j < 4; ++j) {
+            real p24 = corner_p[j] * real(16777216.0);
+            uint key = corner_key[j];
+            for (int i = 0; i < 12; ++i) {
+                uint word = glint_hash_u32(px.word[i] ^ key);
+                masks.bits[i] |= ((real(int(word >> 8u)) < px.skip_scale[i] * p24 + real(167.77216)) ? 1 : 0) << j;
+            }
         }
     }
     int corner_bits = (1 << corners) - 1;

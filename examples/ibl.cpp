@@ -2,7 +2,10 @@
 // KK25 Sec. 4-5), rendered on the CPU with every core; writes OpenEXR and a PNG preview.
 //
 //   glint_ibl [--env PATH.exr] [--k 4|8] [--smooth] [--seed N] [--density LOG] [--roughness A]
-//             [--size WxH] [--out PATH.exr]
+//             [--one-lattice-point] [--size WxH] [--out PATH.exr]
+//
+// --one-lattice-point shades each pixel's glints on one of its footprint's four lattice points
+// (glint::grid_pixel_setup with a lattice_u): the same mean and per-pixel variance, cheaper.
 //
 // Bare, it renders the showcase: the sphere in data/envmaps/sunset.exr, K = 4.
 #include <algorithm>
@@ -30,7 +33,7 @@ namespace {
     std::fprintf(stderr,
                  "glint_ibl: %s\n"
                  "usage: glint_ibl [--env PATH.exr] [--k 4|8] [--smooth] [--seed N] [--density LOG] [--roughness A]\n"
-                 "                 [--size WxH] [--out PATH.exr]\n",
+                 "                 [--one-lattice-point] [--size WxH] [--out PATH.exr]\n",
                  problem.c_str());
     std::exit(2);
 }
@@ -40,7 +43,7 @@ namespace {
 int main(int argc, char** argv) {
     std::string env_path = std::string(GLINT_DATA_DIR) + "/envmaps/sunset.exr", out = "glint_ibl.exr";
     int K = 4, w = 640, h = 400;
-    bool smooth = false;
+    bool smooth = false, one_lattice_point = false;
     std::uint32_t seed = 1;
     float log_density = 5.0f, roughness = 0.12f;
     for (int i = 1; i < argc; ++i) {
@@ -52,6 +55,7 @@ int main(int argc, char** argv) {
             if (v != "4" && v != "8") usage("--k must be 4 or 8, got '" + v + "'");
             K = std::stoi(v);
         } else if (a == "--smooth") smooth = true;
+        else if (a == "--one-lattice-point") one_lattice_point = true;
         else if (a == "--seed") seed = static_cast<std::uint32_t>(parse_float(a, value(), 0, 4e9f, usage));
         else if (a == "--density") log_density = parse_float(a, value(), -20, 40, usage);
         else if (a == "--roughness") roughness = parse_float(a, value(), 1e-3f, 1, usage);
@@ -81,6 +85,7 @@ int main(int argc, char** argv) {
     const camera cam = ibl_camera(w, h);
     ibl_settings settings;
     settings.smooth = smooth, settings.seed = seed, settings.log_density = log_density, settings.roughness = roughness;
+    settings.stochastic_lattice = one_lattice_point;
     std::vector<float> rgb(3 * static_cast<std::size_t>(w) * static_cast<std::size_t>(h));
     const render_timing t = render_rows(h, "glint_ibl: rendering " + std::to_string(w) + "x" + std::to_string(h), [&](int y) {
         for (int x = 0; x < w; ++x) {

@@ -16,6 +16,7 @@ struct ibl_settings {
     std::uint32_t seed = 1;
     float log_density = 5.0f;  // ln(microfacets per unit uv area)
     float roughness = 0.12f;   // GGX alpha of the sphere
+    bool stochastic_lattice = false;  // one lattice point per pixel (render_ibl_pixel: lights_scene.hpp's lattice_uniform)
 };
 
 inline camera ibl_camera(int width, int height) { return camera(width, height, vec3(0.0f, 0.75f, 3.2f), sphere_centre); }
@@ -31,7 +32,7 @@ inline glint::grid_params<float> ibl_grid(const ibl_settings& s) {
 
 // Radiance towards the eye from the sphere at ht, seen along the unit ray direction d.
 inline vec3 shade_ibl(const glint::environment& env, const ibl_settings& s, const hit& ht, const vec3& d, const vec2& duvdx,
-                      const vec2& duvdy) {
+                      const vec2& duvdy, float lattice_u = -1.0f) {
     const float sa = std::sqrt(s.roughness);
     const float cos_o = std::max(glm::dot(-d, ht.n), 1e-4f);
     const vec3 r = glm::reflect(d, ht.n);
@@ -42,8 +43,9 @@ inline vec3 shade_ibl(const glint::environment& env, const ibl_settings& s, cons
     } else {
         const auto look = env.lookup(r, sa);
         radiance = look.radiance;
-        const auto e = glint::ibl_sample(ht.uv, duvdx, duvdy, ibl_grid(s), env.levels(), look.indicators, env.visible_area(cos_o, sa),
-                                         env.total_area(s.roughness));
+        const auto g = ibl_grid(s);
+        auto px = glint::grid_pixel_setup(ht.uv, duvdx, duvdy, g, lattice_u);  // lattice_u < 0: every lattice point
+        const auto e = glint::ibl_sample(px, g, env.levels(), look.indicators, env.visible_area(cos_o, sa), env.total_area(s.roughness));
         m = glint::modulation(e);
     }
     const float albedo = env.albedo(cos_o, sa);
@@ -60,7 +62,7 @@ inline vec3 render_ibl_pixel(const glint::environment& env, const ibl_settings& 
     if (!ht.found || !ht.sphere) return env.lookup_radiance(d, 0.0f);
     vec2 duvdx, duvdy;
     footprint_derivatives(cam, ht, fx, fy, duvdx, duvdy);
-    return shade_ibl(env, s, ht, d, duvdx, duvdy);
+    return shade_ibl(env, s, ht, d, duvdx, duvdy, s.stochastic_lattice ? lattice_uniform(x, y, ibl_grid(s).seed) : -1.0f);
 }
 
 }  // namespace glint_examples

@@ -30,8 +30,17 @@ struct scene_options {
     float roughness = 0.12f;   // GGX alpha of both surfaces
     glint::binomial_variant variant = glint::binomial_variant::unbiased;
     float smooth_tolerance = 0.01f;  // glint::grid_params::smooth_tolerance
+    bool stochastic_lattice = false;  // one lattice point per pixel (glint::grid_pixel_setup with lattice_uniform's u)
     int width = 800, height = 500;
 };
+
+// The uniform that picks pixel (x, y)'s lattice point where stochastic_lattice is on: a hash of the
+// pixel and the scene's grid seed, white noise over pixels, the same for every renderer of the
+// frame (glint_gl's shaders: glint_gl_lattice_u), new with every seed.
+inline float lattice_uniform(int x, int y, std::uint32_t seed) {
+    const glm::uvec3 key(static_cast<std::uint32_t>(x), static_cast<std::uint32_t>(y), seed ^ 0x5bd1e995u);  // MurmurHash2's constant: any salt
+    return glint::unit_from_bits<float>(glint::pcg3d(key).x);
+}
 
 struct hit {
     bool found = false;
@@ -149,7 +158,7 @@ inline vec3 to_local(const hit& h, const vec3& w) { return {glm::dot(w, h.t), gl
 
 // Radiance towards the eye from hit h (wo: unit vector towards the eye, world).
 inline vec3 shade(const scene_options& opt, const light_setup& ls, const hit& h, const vec3& wo_world, const vec2& duvdx, const vec2& duvdy,
-                  shading_counters& counters) {
+                  shading_counters& counters, float lattice_u = -1.0f) {
     const vec2 alpha(opt.roughness);
     const vec3 wo = to_local(h, wo_world);
     if (!(wo.z > 0)) return vec3(0);
@@ -211,7 +220,8 @@ inline vec3 shade(const scene_options& opt, const light_setup& ls, const hit& h,
         g.seed += h.sphere ? 1u : 2u;
         const auto light = ls.type == light_type::point ? glint::grid_point_light(glint::ndf::ggx, alpha, dh, hv)
                                                         : glint::grid_extended_light(std::min(1.0f, d_omega / dh), hv);
-        const auto e = glint::grid_sample(h.uv, duvdx, duvdy, g, light);
+        auto px = glint::grid_pixel_setup(h.uv, duvdx, duvdy, g, lattice_u);  // lattice_u < 0: every lattice point
+        const auto e = glint::grid_sample(px, g, light);
         counters.draws += static_cast<std::uint64_t>(e.draws);
         specular *= glint::modulation(e);
     }
@@ -269,7 +279,7 @@ inline vec3 render_pixel(const scene_options& opt, const light_setup& ls, const 
     if (!h.found) return background(d);
     vec2 duvdx, duvdy;
     footprint_derivatives(cam, h, fx, fy, duvdx, duvdy);
-    return shade(opt, ls, h, -d, duvdx, duvdy, counters);
+    return shade(opt, ls, h, -d, duvdx, duvdy, counters, opt.stochastic_lattice ? lattice_uniform(x, y, lights_grid(opt).seed) : -1.0f);
 }
 
 }  // namespace glint_examples

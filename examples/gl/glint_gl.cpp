@@ -7,8 +7,8 @@
 // CPU ray tracer of examples/lights.cpp and examples/ibl.cpp (its own geometry and footprints).
 //
 //   glint_gl [--size WxH] [--frames N] [--warmup N] [--scenes LIST] [--deferred] [--const-table]
-//            [--compare] [--no-images] [--env PATH.exr] [--out DIR] [--egl surfaceless|device|default]
-//            [--pragma TEXT]...
+//            [--one-lattice-point] [--compare] [--no-images] [--env PATH.exr] [--out DIR]
+//            [--egl surfaceless|device|default] [--pragma TEXT]...
 //
 // Scenes: point, sun, area (the lights scene), ibl4, ibl8 (K = 4, 8), each with glints and with
 // the smooth BRDF; LIST is comma-separated (default: all). Timings go to stdout and, with --out,
@@ -19,7 +19,10 @@
 // then a compute shader (deferred.comp) shades every pixel with the same shading functions; the
 // two passes are timed apart. The binomial sampler's table comes from a shader storage buffer
 // (GLINT_BINOMIAL_TABLE_BINDING, glint::glsl_binomial_table()); --const-table compiles it as
-// binomial.glsl's constant array instead, for comparison. --egl picks the EGL platform to try
+// binomial.glsl's constant array instead, for comparison. --one-lattice-point shades the glints on
+// one of the footprint's four lattice points per pixel (glint_grid_pixel_setup_stochastic, its
+// uniform a hash of the pixel as lights_scene.hpp's lattice_uniform; the CPU images do the same).
+// --egl picks the EGL platform to try
 // first. --pragma adds "#pragma TEXT" to every fragment and compute shader ("--pragma none" drops those given
 // before it). On an H200 (driver 580.159.04, docs/gpu.md) NVIDIA's compiler, unrolling the
 // kernels' loops as it does by default, took 68 s over lights.frag and 35 s over ibl.frag (its
@@ -61,7 +64,7 @@ namespace {
     std::fprintf(stderr,
                  "glint_gl: %s\n"
                  "usage: glint_gl [--size WxH] [--frames N] [--warmup N] [--scenes point,sun,area,ibl4,ibl8] [--deferred]\n"
-                 "                [--const-table] [--compare] [--no-images] [--env PATH.exr] [--out DIR]\n"
+                 "                [--const-table] [--one-lattice-point] [--compare] [--no-images] [--env PATH.exr] [--out DIR]\n"
                  "                [--egl surfaceless|device|default] [--pragma TEXT]...\n",
                  problem.c_str());
     std::exit(2);
@@ -74,6 +77,7 @@ struct settings {
     bool compare = false, images = true;
     bool deferred = false;  // a G-buffer raster pass, then a compute shading pass
     bool const_table = false;  // the binomial sampler's table as binomial.glsl's constant array, not a buffer
+    bool one_lattice_point = false;  // glints on one lattice point per pixel
     std::string env = std::string(GLINT_DATA_DIR) + "/envmaps/sunset.exr";
     std::string out;
     std::string egl = "surfaceless";
@@ -94,6 +98,7 @@ settings parse(int argc, char** argv) {
         else if (a == "--compare") s.compare = true;
         else if (a == "--deferred") s.deferred = true;
         else if (a == "--const-table") s.const_table = true;
+        else if (a == "--one-lattice-point") s.one_lattice_point = true;
         else if (a == "--no-images") s.images = false;
         else if (a == "--env") s.env = value();
         else if (a == "--out") s.out = value();
@@ -527,14 +532,15 @@ agreement compare(const std::vector<float>& a_pixels, std::size_t stride, const 
 
 // The CPU's images of scene s: `replay` shades the GL frame's G-buffer (its positions, normals,
 // uv and derivatives) in C++; `ray` is the CPU ray tracer's own frame.
-void cpu_images(const scene& s, const glint::environment* env, int w, int h, const std::vector<float>& uv_dx, const std::vector<float>& dy_kind,
-                const std::vector<float>& position, const std::vector<float>& normal, std::vector<float>& replay, std::vector<float>& ray) {
+void cpu_images(const scene& s, const glint::environment* env, int w, int h, bool one_lattice_point, const std::vector<float>& uv_dx,
+                const std::vector<float>& dy_kind, const std::vector<float>& position, const std::vector<float>& normal, std::vector<float>& replay,
+                std::vector<float>& ray) {
     scene_options opt;
-    opt.light = s.light, opt.smooth = s.smooth, opt.width = w, opt.height = h;
+    opt.light = s.light, opt.smooth = s.smooth, opt.width = w, opt.height = h, opt.stochastic_lattice = one_lattice_point;
     light_setup ls;
     ls.type = s.light;
     ibl_settings is;
-    is.smooth = s.smooth;
+    is.smooth = s.smooth, is.stochastic_lattice = one_lattice_point;
     const camera cam = s.ibl ? ibl_camera(w, h) : camera(w, h);
     replay.assign(3 * static_cast<std::size_t>(w) * static_cast<std::size_t>(h), 0.0f);
     ray = replay;
@@ -559,8 +565,9 @@ void cpu_images(const scene& s, const glint::environment* env, int w, int h, con
                 } else {
                     ht.t = vec3(1, 0, 0), ht.b = vec3(0, 0, -1);
                 }
-                L = s.ibl ? shade_ibl(*env, is, ht, glm::normalize(ht.p - cam.eye), duvdx, duvdy)
-                          : shade(opt, ls, ht, glm::normalize(cam.eye - ht.p), duvdx, duvdy, counters);
+                const float lattice_u = !one_lattice_point ? -1.0f : lattice_uniform(x, y, s.ibl ? ibl_grid(is).seed : lights_grid(opt).seed);
+                L = s.ibl ? shade_ibl(*env, is, ht, glm::normalize(ht.p - cam.eye), duvdx, duvdy, lattice_u)
+                          : shade(opt, ls, ht, glm::normalize(cam.eye - ht.p), duvdx, duvdy, counters, lattice_u);
             }
             const vec3 R = s.ibl ? render_ibl_pixel(*env, is, cam, x, y) : render_pixel(opt, ls, cam, x, y, counters);
             for (int c = 0; c < 3; ++c) replay[3 * i + static_cast<std::size_t>(c)] = L[c], ray[3 * i + static_cast<std::size_t>(c)] = R[c];
@@ -624,6 +631,7 @@ int main(int argc, char** argv) {
             glBindBufferBase(GL_SHADER_STORAGE_BUFFER, table_binding, table_buffer);
             preamble.push_back("#define GLINT_BINOMIAL_TABLE_BINDING " + std::to_string(table_binding));
         }
+        preamble.push_back(std::string("#define GLINT_GL_ONE_LATTICE_POINT ") + (opt.one_lattice_point ? "1" : "0"));
         const programs progs = make_programs(lights, need[4] || need[8], opt.deferred, opt.compare, preamble);
         std::printf("glint_gl: [%.1f s] drawing\n", seconds_since(start));
         const mesh m = make_mesh();
@@ -751,7 +759,7 @@ int main(int argc, char** argv) {
                     glFinish();
                     const auto color = read_rgba(t, 0), uv_dx = read_rgba(t, 1), dy_kind = read_rgba(t, 2), pos = read_rgba(t, 3), nrm = read_rgba(t, 4);
                     std::vector<float> replay, ray;
-                    cpu_images(s, s.ibl ? envs[s.K].get() : nullptr, opt.width, opt.height, uv_dx, dy_kind, pos, nrm, replay, ray);
+                    cpu_images(s, s.ibl ? envs[s.K].get() : nullptr, opt.width, opt.height, opt.one_lattice_point, uv_dx, dy_kind, pos, nrm, replay, ray);
                     const agreement r = compare(color, 4, replay), c = compare(color, 4, ray);
                     // Bounds. Against the replay (the same inputs): the grid parity test's bound on
                     // estimates that flip (tests/glsl/tolerances.hpp GRID_GLSL_MAX_FLIP_RATE, 1%), a
@@ -792,6 +800,7 @@ int main(int argc, char** argv) {
                << "Every scene is drawn with glints and with the smooth BRDF of the same scene, each by its own programs (the smooth ones "
                   "compiled without the glint code; the IBL's smooth frame reads the radiance only).\n\n"
                << "The binomial sampler's table: " << (opt.const_table ? "binomial.glsl's constant array (--const-table)" : "a shader storage buffer")
+               << (opt.one_lattice_point ? ". Glints on one lattice point per pixel (--one-lattice-point)" : "")
                << ".\n\nDevice: " << device << " (OpenGL " << glint_gl::gl_context::version() << "), " << opt.width << "x" << opt.height << ", median of "
                << opt.frames << " frames after " << opt.warmup << " warm-up.\n\n"
                << timings.str();

@@ -18,6 +18,13 @@ vec2 glint_gl_pixel() { return vec2(float(gl_GlobalInvocationID.x) + 0.5, u_size
 vec2 glint_gl_pixel() { return vec2(gl_FragCoord.x, u_size.y - gl_FragCoord.y); }
 #endif
 
+// The uniform that picks this pixel's lattice point where GLINT_GL_ONE_LATTICE_POINT is 1:
+// examples/lights_scene.hpp lattice_uniform(x, y, seed), a hash of the pixel and the grid's seed.
+float glint_gl_lattice_u(uint seed) {
+    uvec2 xy = uvec2(floor(glint_gl_pixel()));
+    return glint_unit_from_bits(glint_pcg3d(uvec3(xy, seed ^ 0x5bd1e995u)).x);
+}
+
 vec3 glint_gl_ray(vec2 f) {
     return normalize(u_forward + u_right * ((f.x - 0.5 * u_size.x) * u_ray_scale) - u_up * ((f.y - 0.5 * u_size.y) * u_ray_scale));
 }

@@ -2,14 +2,17 @@
 // change of a few percent (valgrind --tool=callgrind counts the same on every run):
 //   glint_frame_loop point FRAMES          the showcase's 160 x 100 point-light frame, glints on
 //   glint_frame_loop point-smooth FRAMES   the same frame shaded smooth
+//   glint_frame_loop point-stochastic FRAMES  the glint frame on one lattice point per pixel
 //   glint_frame_loop ibl K FRAMES          glint::ibl_sample on bench/report_ibl.cpp's sphere
+//   glint_frame_loop ibl-stochastic K FRAMES  the same on one lattice point per pixel
 //                                          (sunset.exr); count it alone with
 //                                          --toggle-collect='glint_ibl_estimate*'
 //   glint_frame_loop draw N P              2e5 draws of glint::binomial_unbiased at (N, P)
 //   glint_frame_loop lights K MODE REPS    the report's several-lights workload
 //                                          (bench/light_pixels.hpp): its 1024 pixels with K
 //                                          lights, MODE 0 smooth, 1 one shared footprint, 2 a
-//                                          footprint per light, REPS times
+//                                          footprint per light, 3 as 1 on one lattice point,
+//                                          REPS times
 // Each prints a sum of its results, so that two builds can be checked to compute the same.
 #include <cstdio>
 #include <cstdlib>
@@ -27,27 +30,31 @@
 #endif
 
 // Out of line, so that callgrind can count the estimate alone.
+// lattice_u < 0: every lattice point; else the one it picks.
 __attribute__((noinline)) glint::ibl_estimate<float> glint_ibl_estimate(glm::vec2 uv, const glint::grid_params<float>& g, const glint::environment& env,
-                                                                        const glint::environment::sample& s, float e_d, float d_h) {
-    return glint::ibl_sample(uv, glm::vec2(1, 0), glm::vec2(0, 1), g, env.levels(), s.indicators, e_d, d_h);
+                                                                        const glint::environment::sample& s, float e_d, float d_h, float lattice_u) {
+    auto px = glint::grid_pixel_setup(uv, glm::vec2(1, 0), glm::vec2(0, 1), g, lattice_u);
+    return glint::ibl_sample(px, g, env.levels(), s.indicators, e_d, d_h);
 }
 
 int main(int argc, char** argv) {
     const char* mode = argc > 1 ? argv[1] : "";
     double sum = 0;
-    if (argc == 3 && (!std::strcmp(mode, "point") || !std::strcmp(mode, "point-smooth"))) {
+    if (argc == 3 && (!std::strcmp(mode, "point") || !std::strcmp(mode, "point-smooth") || !std::strcmp(mode, "point-stochastic"))) {
         using namespace glint_examples;
         const camera cam(160, 100);
         for (int frame = 0; frame < std::atoi(argv[2]); ++frame) {
             scene_options opt;
             opt.smooth = !std::strcmp(mode, "point-smooth");
+            opt.stochastic_lattice = !std::strcmp(mode, "point-stochastic");
             light_setup ls;
             ls.type = light_type::point;
             shading_counters c;
             for (int y = 0; y < 100; ++y)
                 for (int x = 0; x < 160; ++x) sum += static_cast<double>(render_pixel(opt, ls, cam, x, y, c).x);
         }
-    } else if (argc == 4 && !std::strcmp(mode, "ibl")) {
+    } else if (argc == 4 && (!std::strcmp(mode, "ibl") || !std::strcmp(mode, "ibl-stochastic"))) {
+        const bool stochastic = !std::strcmp(mode, "ibl-stochastic");
         const auto img = glint::io::read_exr(std::string(GLINT_DATA_DIR) + "/envmaps/sunset.exr");
         glint::ibl_options o;
         o.levels = std::atoi(argv[2]);
@@ -63,7 +70,9 @@ int main(int argc, char** argv) {
                     glint::grid_params<float> g;
                     g.log_density = 4.0f;
                     g.seed = static_cast<std::uint32_t>(frame);
-                    const auto e = glint_ibl_estimate(glm::vec2(static_cast<float>(x), static_cast<float>(y)), g, env, s, env.visible_area(n.z, sa), dh);
+                    const glm::vec2 uv(static_cast<float>(x), static_cast<float>(y));
+                    const float lattice_u = stochastic ? glint_examples::lattice_uniform(x, y, g.seed) : -1.0f;
+                    const auto e = glint_ibl_estimate(uv, g, env, s, env.visible_area(n.z, sa), dh, lattice_u);
                     sum += static_cast<double>(glint::modulation(e));
                 }
     } else if (argc == 4 && !std::strcmp(mode, "draw")) {
@@ -78,7 +87,7 @@ int main(int argc, char** argv) {
         for (int rep = 0; rep < std::atoi(argv[4]); ++rep)
             for (int i = 0; i < glint_bench::light_pixels::pixels; ++i) sum += static_cast<double>(glint_bench::shade_light_pixel(lp, i, k, shading).x);
     } else {
-        std::fprintf(stderr, "usage: glint_frame_loop point|point-smooth FRAMES | ibl K FRAMES | draw N P | lights K MODE REPS\n");
+        std::fprintf(stderr, "usage: glint_frame_loop point|point-smooth|point-stochastic FRAMES | ibl|ibl-stochastic K FRAMES | draw N P | lights K MODE REPS\n");
         return 2;
     }
     std::printf("%s: sum %.9g\n", mode, sum);

@@ -45,13 +45,15 @@ inline glm::vec3 smooth_point(const glm::vec3& wi, const glm::vec3& wo, glm::vec
 }
 
 // Pixel i of lp shaded by its first k lights. mode 0: smooth; 1: glints on one footprint shared by
-// every light (grid_pixel); 2: glints through a footprint of each light's own (grid_sample each).
+// every light (grid_pixel); 2: glints through a footprint of each light's own (grid_sample each);
+// 3: as 1 on one lattice point drawn per pixel (grid_pixel_setup with a lattice_u).
 inline glm::vec3 shade_light_pixel(const light_pixels& lp, int i, int k, int mode) {
     const auto at = static_cast<std::size_t>(i);
     glint::grid_params<float> g;
     g.log_density = 5, g.seed = static_cast<std::uint32_t>(i);
     const float dh = glint::total_area(glint::ndf::ggx, glm::vec2(0.25f));
-    auto px = glint::grid_pixel_setup(lp.uv[at], lp.duvdx[at], lp.duvdy[at], g);
+    const float lattice_u = mode == 3 ? glint::unit_from_bits<float>(glint::pcg3d(glm::uvec3(static_cast<std::uint32_t>(i), 0x1a77u, 0x51u)).x) : -1.0f;
+    auto px = glint::grid_pixel_setup(lp.uv[at], lp.duvdx[at], lp.duvdy[at], g, lattice_u);
     glm::vec3 sum(0);
     for (int l = 0; l < k; ++l) {
         glm::vec3 hv;
@@ -61,7 +63,7 @@ inline glm::vec3 shade_light_pixel(const light_pixels& lp, int i, int k, int mod
             continue;
         }
         const auto light = glint::grid_point_light(glint::ndf::ggx, glm::vec2(0.25f), dh, hv);
-        const auto e = mode == 1 ? glint::grid_sample(px, g, light) : glint::grid_sample(lp.uv[at], lp.duvdx[at], lp.duvdy[at], g, light);
+        const auto e = mode != 2 ? glint::grid_sample(px, g, light) : glint::grid_sample(lp.uv[at], lp.duvdx[at], lp.duvdy[at], g, light);
         sum += c * glint::modulation(e);
     }
     return sum;

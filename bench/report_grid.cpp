@@ -23,26 +23,39 @@ namespace glint_report {
 namespace {
 
 // R / E[R] over seeds at one scene: its mean (must be 1), standard deviation (the glints'
-// contrast) and the fraction of footprints with any glint.
+// contrast), the standard error of its variance ((m4 - var^2) / n, the sample variance's), and
+// the fraction of footprints with any glint.
 struct glint_statistics {
-    double mean = 0, se = 0, sd = 0, lit = 0;
+    double mean = 0, se = 0, sd = 0, variance_se = 0, lit = 0;
 };
 
-glint_statistics grid_statistics(const glint_test::grid_scene& s, int n) {
+// one_point: each sample on one lattice point, drawn with a uniform of its own (grid_pixel_setup
+// with a lattice_u); salt: other seeds and positions, for samples independent of another run's.
+glint_statistics grid_statistics(const glint_test::grid_scene& s, int n, bool one_point = false, std::uint32_t salt = 0) {
     glm::vec2 dx, dy;
     s.derivatives(dx, dy);
-    double sum = 0, sq = 0, lit = 0;
+    std::vector<double> m(static_cast<std::size_t>(n));
+    double sum = 0, lit = 0;
     for (int i = 0; i < n; ++i) {
-        const auto g = s.params(static_cast<std::uint32_t>(i) * 2654435761u + 17u);
-        const glm::uvec3 h = glint::pcg3d(glm::uvec3(static_cast<std::uint32_t>(i), 9u, 9u));
+        const auto g = s.params(static_cast<std::uint32_t>(i) * 2654435761u + 17u + salt * 0x9E3779B9u);
+        const glm::uvec3 h = glint::pcg3d(glm::uvec3(static_cast<std::uint32_t>(i), 9u + salt, 9u));
         const glm::vec2 uv(glint::unit_from_bits<float>(h.x) * 97.0f, glint::unit_from_bits<float>(h.y) * 89.0f);
-        const double m = static_cast<double>(glint::modulation(glint::grid_sample(uv, dx, dy, g, s.light)));
-        sum += m, sq += m * m, lit += m > 0;
+        auto px = glint::grid_pixel_setup(uv, dx, dy, g, one_point ? glint::unit_from_bits<float>(h.z) : -1.0f);
+        const double r = static_cast<double>(glint::modulation(glint::grid_sample(px, g, s.light)));
+        m[static_cast<std::size_t>(i)] = r;
+        sum += r, lit += r > 0;
     }
     glint_statistics o;
     o.mean = sum / n;
-    o.sd = std::sqrt(std::max(0.0, sq / n - o.mean * o.mean));
+    double m2 = 0, m4 = 0;
+    for (double r : m) {
+        const double d = (r - o.mean) * (r - o.mean);
+        m2 += d, m4 += d * d;
+    }
+    m2 /= n, m4 /= n;
+    o.sd = std::sqrt(m2);
     o.se = o.sd / std::sqrt(static_cast<double>(n));
+    o.variance_se = std::sqrt(std::max(0.0, m4 - m2 * m2) / n);
     o.lit = lit / n;
     return o;
 }
@@ -120,14 +133,16 @@ section grid_section(double min_time) {
     const camera cam(fw, fh);
     // Modes: 0 smooth; 1 glints; 2 glints, every footprint sampled; 3 glints switched off (the
     // renderer's smooth path through its glint switch); 4 and 5: glints at ln density 14 with
-    // and without the smooth-result gate (where most footprints hold enough microfacets).
+    // and without the smooth-result gate (where most footprints hold enough microfacets); 6: glints
+    // on one lattice point per pixel (scene_options::stochastic_lattice).
     for (light_type t : {light_type::point, light_type::sun, light_type::area})
-        for (int mode = 0; mode < 6; ++mode) {
+        for (int mode = 0; mode < 7; ++mode) {
             add(std::string("frame_") + name(t) + "_" + std::to_string(mode), [t, mode, &cam, fw, fh](std::size_t) {
                 scene_options opt;
                 opt.smooth = mode == 0 || mode == 3;
+                opt.stochastic_lattice = mode == 6;
                 opt.smooth_tolerance = (mode == 2 || mode == 5) ? 0.0f : 0.01f;
-                if (mode >= 4) opt.log_density = 14.0f;
+                if (mode == 4 || mode == 5) opt.log_density = 14.0f;
                 light_setup ls;
                 ls.type = t;
                 shading_counters c;
@@ -139,10 +154,11 @@ section grid_section(double min_time) {
         }
     // --- several point lights on one footprint -------------------------------------------------
     // Per pixel: k lights shaded smooth, with glints on one shared footprint (grid_pixel), and
-    // with glints through a footprint of their own per light (grid_sample for each).
+    // with glints through a footprint of their own per light (grid_sample for each), and on one
+    // shared footprint's one lattice point.
     static const glint_bench::light_pixels lp;
     for (int k : {1, 8})
-        for (int mode = 0; mode < 3; ++mode)
+        for (int mode = 0; mode < 4; ++mode)
             add_inline("lights_" + std::to_string(mode) + "_" + std::to_string(k), [k, mode](std::size_t j) {
                 benchmark::DoNotOptimize(glint_bench::shade_light_pixel(lp, static_cast<int>(j % glint_bench::light_pixels::pixels), k, mode));
             }, min_time);
@@ -204,27 +220,56 @@ section grid_section(double min_time) {
             << ",,smooth BRDF\n";
     }
     t4 << "\n";
+    std::ostringstream t6;
+    {
+        const int n = 40000;
+        t6 << "R / E[R] with each footprint's glints on one of its four lattice points, drawn with probability w_L (grid_pixel_setup with a "
+              "lattice_u), against all four (the default): GGX alpha 0.25, footprints at 30 degrees, " << n << " footprints per column at "
+              "random positions and seeds, the two columns' samples independent. The mean must be 1 in both; the per-pixel variance is the "
+              "same in theory wherever the draws' variance is linear in the vertices' microfacet count (binomial); the ratio's standard "
+              "error is from each sample variance's own, (m4 - var^2) / n.\n\n"
+           << "| light | ln density | footprint, ratio | N E[R] | mean, four | mean, one | sd, four | sd, one | variance ratio one / four (se) |\n"
+              "|---|---|---|---|---|---|---|---|---|\n";
+        for (glint_test::light_kind k : {glint_test::light_kind::point, glint_test::light_kind::sun})
+            for (float logd : {2.0f, 4.0f, 6.0f})
+                for (float fp : {3.0f, 30.0f}) {
+                    glint_test::grid_scene sc;
+                    sc.kind = k, sc.alpha = 0.25f, sc.log_density = logd, sc.footprint = fp, sc.ratio = fp > 10 ? 5.7f : 1.0f;
+                    sc.prepare();
+                    const auto four = grid_statistics(sc, n), one = grid_statistics(sc, n, true, 1);
+                    const double v4 = four.sd * four.sd, v1 = one.sd * one.sd, r = v4 > 0 ? v1 / v4 : 0;
+                    const double rse = (v4 > 0 && v1 > 0) ? r * std::sqrt(std::pow(four.variance_se / v4, 2) + std::pow(one.variance_se / v1, 2)) : 0;
+                    t6 << "| " << glint_test::name(k) << " | " << fmt(logd, "%g") << " | " << fmt(fp, "%g") << ", " << fmt(sc.ratio, "%g") << " | "
+                       << fmt(sc.expected_glints(), "%.3g") << " | " << fmt(four.mean, "%.4f") << " | " << fmt(one.mean, "%.4f") << " | "
+                       << fmt(four.sd, "%.3g") << " | " << fmt(one.sd, "%.3g") << " | " << fmt(r, "%.3f") << " (" << fmt(rse, "%.3f") << ") |\n";
+                }
+        t6 << "\n";
+    }
     std::ostringstream t3;
     t3 << "Frame cost of the showcase scene (examples/lights_scene.hpp, " << fw << "x" << fh
        << ", one thread): glint shading against smooth shading of the same scene, ln density 5 (the showcase). \"Glints\" uses the "
           "smooth-result gate (smooth_tolerance 0.01: footprints whose estimate's relative standard deviation is surely below 1% "
           "return the smooth result without drawing); \"all sampled\" turns the gate off; \"off\" switches glints off. At ln "
-          "density 14 most footprints hold enough microfacets for the gate: the last columns show the time it saves.\n\n"
-       << "| light | smooth ms | glints ms | glints / smooth | all sampled / smooth | off / smooth | density 14: glints / smooth | density 14: all sampled / smooth |\n|---|---|---|---|---|---|---|---|\n";
+          "density 14 most footprints hold enough microfacets for the gate: the last columns show the time it saves. \"One lattice "
+          "point\" draws one of the footprint's four lattice points per pixel with probability w_L (scene_options::stochastic_lattice, "
+          "glint::grid_pixel_setup with a lattice_u): the same mean and per-pixel variance, 3 vertices instead of up to 12.\n\n"
+       << "| light | smooth ms | glints ms | glints / smooth | one lattice point / smooth | all sampled / smooth | off / smooth | density 14: glints / smooth | density 14: all sampled / smooth |\n|---|---|---|---|---|---|---|---|---|\n";
     for (light_type t : {light_type::point, light_type::sun, light_type::area}) {
         const double s0 = ns.at(std::string("frame_") + name(t) + "_0"), s1 = ns.at(std::string("frame_") + name(t) + "_1"),
                      s2 = ns.at(std::string("frame_") + name(t) + "_2");
         const double s3 = ns.at(std::string("frame_") + name(t) + "_3"), s4 = ns.at(std::string("frame_") + name(t) + "_4"),
-                     s5 = ns.at(std::string("frame_") + name(t) + "_5");
-        t3 << "| " << name(t) << " | " << fmt(s0 * 1e-6) << " | " << fmt(s1 * 1e-6) << " | " << fmt(s1 / s0) << " | " << fmt(s2 / s0) << " | "
+                     s5 = ns.at(std::string("frame_") + name(t) + "_5"), s6 = ns.at(std::string("frame_") + name(t) + "_6");
+        t3 << "| " << name(t) << " | " << fmt(s0 * 1e-6) << " | " << fmt(s1 * 1e-6) << " | " << fmt(s1 / s0) << " | " << fmt(s6 / s0) << " | " << fmt(s2 / s0) << " | "
            << fmt(s3 / s0) << " | " << fmt(s4 / s0) << " | " << fmt(s5 / s0) << " |\n";
         csv << "frame," << name(t) << " light glints/smooth,float,ratio," << s1 / s0 << "," << s1 << "," << s1 / s0 << ",smooth frame\n";
+        csv << "frame," << name(t) << " light glints on one lattice point/smooth,float,ratio," << s6 / s0 << "," << s6 << "," << s6 / s0 << ",smooth frame\n";
     }
     t3 << "\n";
     std::ostringstream t5;
     {
         auto at = [&](int mode, int k) { return ns.at("lights_" + std::to_string(mode) + "_" + std::to_string(k)); };
-        const double smooth_extra = (at(0, 8) - at(0, 1)) / 7, shared_extra = (at(1, 8) - at(1, 1)) / 7, own_extra = (at(2, 8) - at(2, 1)) / 7;
+        const double smooth_extra = (at(0, 8) - at(0, 1)) / 7, shared_extra = (at(1, 8) - at(1, 1)) / 7, own_extra = (at(2, 8) - at(2, 1)) / 7,
+                     one_point_extra = (at(3, 8) - at(3, 1)) / 7;
         t5 << "Several point lights on glinty pixels (1024 pixels of the showcase's flake paint: GGX, alpha 0.25, ln density 5, footprints "
               "of 0.4 to 0.8 uv units, N about 20 to 80; one thread; each light's smooth specular is GGX D, Smith G2 and silver's "
               "conductor Fresnel). The cost of each extra light is (t(8 lights) - t(1 light)) / 7.\n\n"
@@ -232,14 +277,18 @@ section grid_section(double min_time) {
            << "| smooth | " << fmt(at(0, 1)) << " | " << fmt(at(0, 8)) << " | " << fmt(smooth_extra) << " | 1 |\n"
            << "| glints, one footprint for every light (grid_pixel) | " << fmt(at(1, 1)) << " | " << fmt(at(1, 8)) << " | " << fmt(shared_extra)
            << " | " << fmt(shared_extra / smooth_extra) << " |\n"
+           << "| glints, one footprint for every light on one lattice point (grid_pixel_setup with a lattice_u) | " << fmt(at(3, 1)) << " | "
+           << fmt(at(3, 8)) << " | " << fmt(one_point_extra) << " | " << fmt(one_point_extra / smooth_extra) << " |\n"
            << "| glints, a footprint per light (grid_sample each) | " << fmt(at(2, 1)) << " | " << fmt(at(2, 8)) << " | " << fmt(own_extra) << " | "
            << fmt(own_extra / smooth_extra) << " |\n\n";
         csv << "lights,extra point light glints/smooth,float,ratio," << shared_extra / smooth_extra << "," << shared_extra << "," << shared_extra / smooth_extra
             << ",smooth extra light\n";
+        csv << "lights,extra point light glints on one lattice point/smooth,float,ratio," << one_point_extra / smooth_extra << "," << one_point_extra << ","
+            << one_point_extra / smooth_extra << ",smooth extra light\n";
     }
-    md << t1.str() << t2.str() << t4.str() << t3.str() << t5.str();
+    md << t1.str() << t2.str() << t4.str() << t6.str() << t3.str() << t5.str();
     doc << "## D_Omega\n\n" << t1.str() << "## Grid estimate\n\n" << t2.str() << "## Slope-grid resolution\n\n" << t4.str()
-        << "## Frame cost\n\n" << t3.str() << "## Several lights on one footprint\n\n" << t5.str();
+        << "## One lattice point per pixel\n\n" << t6.str() << "## Frame cost\n\n" << t3.str() << "## Several lights on one footprint\n\n" << t5.str();
     out.markdown = md.str();
     out.csv_rows = csv.str();
     out.files["grid.md"] = doc.str();

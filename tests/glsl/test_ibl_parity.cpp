@@ -52,6 +52,7 @@ TEST_CASE("ibl: glint_bilinear reproduces OpenGL's GL_LINEAR filtering with GL_R
     CHECK(worst < IBL_FILTER_GLSL_MAX_ABSOLUTE * 10);
 }
 
+// Half the estimates (i & 4) on one lattice point per pixel (glint_grid_pixel_setup_stochastic).
 TEST_CASE("ibl: equirectangular mapping, fuzzy weights and the glint estimate: GLSL against C++") {
     const std::size_t n = 20000;
     std::vector<float> in;
@@ -67,13 +68,15 @@ TEST_CASE("ibl: equirectangular mapping, fuzzy weights and the glint estimate: G
         " for (int k = 0; k < 8; ++k) ind.w[k] /= s;"
         " glint_grid_params g; g.log_density = -2.0 + 10.0 * r[11]; g.density_sigma = 0.0; g.lod_scale = 1.5; g.slope_cell = 0.02;"
         " g.smooth_tolerance = 0.0; g.variant = 4; g.pow_method = 2; g.seed = i * 747796405u;"
-        " glint_grid_estimate e = glint_ibl_sample(vec2(r[0], r[1]) * 100.0, vec2(1.0, 0.1), vec2(-0.2, 0.8), g, lv, ind, 0.9, 1.1);"
+        " float lattice_u = ((i & 4u) != 0u) ? glint_unit_from_bits(glint_hash_u32(i * 2654435761u)) : -1.0;"
+        " glint_grid_pixel px = glint_grid_pixel_setup_stochastic(vec2(r[0], r[1]) * 100.0, vec2(1.0, 0.1), vec2(-0.2, 0.8), g, lattice_u);"
+        " glint_grid_estimate e = glint_ibl_sample_pixel(px, g, lv, ind, 0.9, 1.1);"
         " out0[6u*i] = floatBitsToUint(d.x); out0[6u*i+1u] = floatBitsToUint(uv.x); out0[6u*i+2u] = floatBitsToUint(uv.y);"
         " out0[6u*i+3u] = floatBitsToUint(jt.x + jt.y); out0[6u*i+4u] = floatBitsToUint(e.value); out0[6u*i+5u] = floatBitsToUint(e.expected);";
     const auto gpu = glint_test::from_words<float>(glint_test::map_words(
         {"core.glsl", "binomial.glsl", "multinomial.glsl", "microfacet.glsl", "grid.glsl", "ibl.glsl"}, body, glint_test::to_words(in), n, 6));
     double worst_map = 0, worst_weight = 0, worst_expected = 0;
-    std::size_t differing = 0, non_finite = 0;
+    std::size_t differing = 0, differing_one_point = 0, one_points = 0, non_finite = 0;
     for (std::uint32_t i = 0; i < n; ++i) {
         const float* r = &in[12 * i];
         const glm::vec3 d = K::glint_equirect_direction(glm::vec2(r[0], r[1]));
@@ -89,18 +92,26 @@ TEST_CASE("ibl: equirectangular mapping, fuzzy weights and the glint estimate: G
         K::glint_grid_params g;
         g.log_density = -2.0f + 10.0f * r[11], g.density_sigma = 0, g.lod_scale = 1.5f, g.slope_cell = 0.02f, g.smooth_tolerance = 0;
         g.variant = 4, g.pow_method = 2, g.seed = i * 747796405u;
-        const auto e = K::glint_ibl_sample(glm::vec2(r[0], r[1]) * 100.0f, glm::vec2(1.0f, 0.1f), glm::vec2(-0.2f, 0.8f), g, lv, ind, 0.9f, 1.1f);
+        const bool one_point = (i & 4u) != 0;
+        const float lattice_u = one_point ? K::glint_unit_from_bits(K::glint_hash_u32(i * 2654435761u)) : -1.0f;
+        auto px = K::glint_grid_pixel_setup_stochastic(glm::vec2(r[0], r[1]) * 100.0f, glm::vec2(1.0f, 0.1f), glm::vec2(-0.2f, 0.8f), g, lattice_u);
+        const auto e = K::glint_ibl_sample_pixel(px, g, lv, ind, 0.9f, 1.1f);
         const float* o = &gpu[6 * i];
         for (int k = 0; k < 6; ++k) non_finite += !std::isfinite(o[k]);
         worst_map = std::max({worst_map, static_cast<double>(std::fabs(o[0] - d.x)), static_cast<double>(std::fabs(o[1] - uv.x)),
                               static_cast<double>(std::fabs(o[2] - uv.y))});
         worst_weight = std::max(worst_weight, static_cast<double>(std::fabs(o[3] - (jt.x + jt.y))));
         worst_expected = std::max(worst_expected, static_cast<double>(std::fabs(o[5] - e.expected) / e.expected));
-        differing += std::fabs(static_cast<double>(o[4] - e.value)) > GRID_GLSL_AGREEMENT * std::max(static_cast<double>(e.value), static_cast<double>(e.expected));
+        const bool differs = std::fabs(static_cast<double>(o[4] - e.value)) > GRID_GLSL_AGREEMENT * std::max(static_cast<double>(e.value), static_cast<double>(e.expected));
+        differing += differs;
+        differing_one_point += differs && one_point;
+        one_points += one_point;
     }
     const double rate = static_cast<double>(differing) / static_cast<double>(n);
     MESSAGE("equirect max difference " << worst_map << ", fuzzy weight (j + t) " << worst_weight << ", E[estimate] relative " << worst_expected
-                                       << "; estimates differing by more than " << GRID_GLSL_AGREEMENT << ": " << differing << " of " << n);
+                                       << "; estimates differing by more than " << GRID_GLSL_AGREEMENT << ": " << differing << " of " << n << " ("
+                                       << differing_one_point << " of the " << one_points << " on one lattice point)");
+    CHECK(one_points > n / 3);
     CHECK(non_finite == 0u);
     CHECK(worst_map < IBL_EQUIRECT_GLSL_MAX_ABSOLUTE);
     CHECK(worst_weight < 1e-4);

@@ -14,10 +14,12 @@
 // triangle grid in uv whose three vertices around the shading point carry barycentric weights
 // l_t; each vertex draws, for each of the four corners of the half-vector slope cell (bilinear
 // weights m_j), c ~ b(N w_L, p_j) from its own hashed random numbers. The estimate
-// R = sum w_L l_t m_j c / N has E[R] = sum m_j p_j exactly, because every draw is mean-preserving
+// R = sum l_t m_j c / N (the count of N w_L trials carries w_L) has E[R] = sum m_j p_j exactly, because every draw is mean-preserving
 // (binomial_unbiased; the published variants are not, which is what the tests show). Glints
 // are stable: fixed random numbers per vertex, continuous weights, so a glint persists while
-// the footprint or the half vector moves within a cell, and fades in and out.
+// the footprint or the half vector moves within a cell, and fades in and out. (Or, cheaper, one of
+// the four lattice points per pixel, drawn with probability w_L: grid_pixel_setup with a
+// lattice_u; the same mean and per-pixel variance, the fades replaced by a per-pixel choice.)
 //
 // Point lights (kind 0) have no solid angle, so p_j comes from the slope cell itself:
 // p_j = slope_cell^2 x (unprojected slope density at the corner) / D_H. Extended lights (kind 1)

@@ -71,7 +71,7 @@ int main(int argc, char** argv) {
                     g.log_density = 4.0f;
                     g.seed = static_cast<std::uint32_t>(frame);
                     const glm::vec2 uv(static_cast<float>(x), static_cast<float>(y));
-                    const float lattice_u = stochastic ? glint_examples::lattice_uniform(x, y, g.seed) : -1.0f;
+                    const float lattice_u = glint_examples::pixel_lattice_u(stochastic, x, y, g.seed);
                     const auto e = glint_ibl_estimate(uv, g, env, s, env.visible_area(n.z, sa), dh, lattice_u);
                     sum += static_cast<double>(glint::modulation(e));
                 }

@@ -102,7 +102,7 @@ section ibl_section(double min_time) {
                             g.seed = static_cast<std::uint32_t>(it);
                             const glm::vec2 uv(static_cast<float>(x), static_cast<float>(y));
                             auto pixel = glint::grid_pixel_setup(uv, glm::vec2(1, 0), glm::vec2(0, 1), g,
-                                                                 mode == 2 ? glint_examples::lattice_uniform(x, y, g.seed) : -1.0f);
+                                                                 glint_examples::pixel_lattice_u(mode == 2, x, y, g.seed));
                             const auto est = glint::ibl_sample(pixel, g, env->levels(), s.indicators, env->visible_area(cos_o, sa), dh);
                             m = glint::modulation(est);
                         }

@@ -62,7 +62,7 @@ inline vec3 render_ibl_pixel(const glint::environment& env, const ibl_settings& 
     if (!ht.found || !ht.sphere) return env.lookup_radiance(d, 0.0f);
     vec2 duvdx, duvdy;
     footprint_derivatives(cam, ht, fx, fy, duvdx, duvdy);
-    return shade_ibl(env, s, ht, d, duvdx, duvdy, s.stochastic_lattice ? lattice_uniform(x, y, ibl_grid(s).seed) : -1.0f);
+    return shade_ibl(env, s, ht, d, duvdx, duvdy, pixel_lattice_u(s.stochastic_lattice, x, y, ibl_grid(s).seed));
 }
 
 }  // namespace glint_examples

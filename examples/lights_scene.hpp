@@ -42,6 +42,12 @@ inline float lattice_uniform(int x, int y, std::uint32_t seed) {
     return glint::unit_from_bits<float>(glint::pcg3d(key).x);
 }
 
+// The lattice_u a renderer of these scenes passes: lattice_uniform where one lattice point is on,
+// else -1 (every lattice point).
+inline float pixel_lattice_u(bool one_lattice_point, int x, int y, std::uint32_t seed) {
+    return one_lattice_point ? lattice_uniform(x, y, seed) : -1.0f;
+}
+
 struct hit {
     bool found = false;
     bool sphere = false;
@@ -279,7 +285,7 @@ inline vec3 render_pixel(const scene_options& opt, const light_setup& ls, const 
     if (!h.found) return background(d);
     vec2 duvdx, duvdy;
     footprint_derivatives(cam, h, fx, fy, duvdx, duvdy);
-    return shade(opt, ls, h, -d, duvdx, duvdy, counters, opt.stochastic_lattice ? lattice_uniform(x, y, lights_grid(opt).seed) : -1.0f);
+    return shade(opt, ls, h, -d, duvdx, duvdy, counters, pixel_lattice_u(opt.stochastic_lattice, x, y, lights_grid(opt).seed));
 }
 
 }  // namespace glint_examples

@@ -565,7 +565,7 @@ void cpu_images(const scene& s, const glint::environment* env, int w, int h, boo
                 } else {
                     ht.t = vec3(1, 0, 0), ht.b = vec3(0, 0, -1);
                 }
-                const float lattice_u = !one_lattice_point ? -1.0f : lattice_uniform(x, y, s.ibl ? ibl_grid(is).seed : lights_grid(opt).seed);
+                const float lattice_u = pixel_lattice_u(one_lattice_point, x, y, s.ibl ? ibl_grid(is).seed : lights_grid(opt).seed);
                 L = s.ibl ? shade_ibl(*env, is, ht, glm::normalize(ht.p - cam.eye), duvdx, duvdy, lattice_u)
                           : shade(opt, ls, ht, glm::normalize(cam.eye - ht.p), duvdx, duvdy, counters, lattice_u);
             }

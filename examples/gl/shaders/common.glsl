@@ -18,9 +18,11 @@ vec2 glint_gl_pixel() { return vec2(float(gl_GlobalInvocationID.x) + 0.5, u_size
 vec2 glint_gl_pixel() { return vec2(gl_FragCoord.x, u_size.y - gl_FragCoord.y); }
 #endif
 
-// The uniform that picks this pixel's lattice point where GLINT_GL_ONE_LATTICE_POINT is 1:
-// examples/lights_scene.hpp lattice_uniform(x, y, seed), a hash of the pixel and the grid's seed.
+// The uniform that picks this pixel's lattice point where GLINT_GL_ONE_LATTICE_POINT is 1
+// (examples/lights_scene.hpp lattice_uniform(x, y, seed), a hash of the pixel and the grid's
+// seed); else -1, every lattice point (glint_grid_pixel_setup_stochastic's u < 0).
 float glint_gl_lattice_u(uint seed) {
+    if (GLINT_GL_ONE_LATTICE_POINT == 0) return -1.0;
     uvec2 xy = uvec2(floor(glint_gl_pixel()));
     return glint_unit_from_bits(glint_pcg3d(uvec3(xy, seed ^ 0x5bd1e995u)).x);
 }

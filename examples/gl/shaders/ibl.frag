@@ -15,12 +15,8 @@ vec3 glint_gl_shade_ibl(vec3 position, vec3 n, vec2 uv, vec2 duvdx, vec2 duvdy) 
     if (GLINT_GL_GLINTS != 0) {
         vec2 alpha = vec2(u_roughness);
         float dh = glint_total_area(0, alpha);  // GGX
-#if GLINT_GL_ONE_LATTICE_POINT
         glint_grid_pixel px = glint_grid_pixel_setup_stochastic(uv, duvdx, duvdy, u_grid, glint_gl_lattice_u(u_grid.seed));
         m = glint_modulation(glint_ibl_sample_pixel(px, u_grid, u_levels, ind, glint_gl_table(1, sqrt(max(cos_o, 0.0)), sa), dh));
-#else
-        m = glint_modulation(glint_ibl_sample(uv, duvdx, duvdy, u_grid, u_levels, ind, glint_gl_table(1, sqrt(max(cos_o, 0.0)), sa), dh));
-#endif
     }
     float albedo = glint_gl_table(0, sqrt(max(cos_o, 0.0)), sa);
     vec3 L;

@@ -73,12 +73,8 @@ vec3 shade(bool sphere, vec3 p, vec3 n, vec3 t, vec3 b, vec2 uv, vec3 wo_world, 
         } else {
             light.kind = 1, light.p = min(1.0, d_omega / dh), light.ndf = 0, light.alpha = vec2(1.0), light.total_area = 1.0;
         }
-#if GLINT_GL_ONE_LATTICE_POINT
         glint_grid_pixel px = glint_grid_pixel_setup_stochastic(uv, duvdx, duvdy, g, glint_gl_lattice_u(u_grid.seed));
         specular *= glint_modulation(glint_grid_sample_pixel(px, g, light));
-#else
-        specular *= glint_modulation(glint_grid_sample(uv, duvdx, duvdy, g, light));
-#endif
     }
     float c = dot(wi_c, hv);
     for (int k = 0; k < 3; ++k) {

@@ -53,7 +53,7 @@
 // 64: 12 tested and 2.6 evaluated per one that contributes; term_count counts those). That count
 // still grows with the footprint's area at a fixed s (flakes: 123, 3620 and 243638 terms at sd 8, 64
 // and 512, at 90 to 115 ns per term): an exact sum cannot do better, and only prefiltered node NDFs
-// (XTXW24's maps, ZXW's K-lobes) make the cost sublinear. (Summing nodes of equal lobes as one
+// make the cost sublinear (below). (Summing nodes of equal lobes as one
 // moment-matched term saved nothing measurable there: 91 to 92% of the terms from sd 64 on come
 // from the flakes' edges, whose lobes differ.) Where the lists would cost more than the footprint's
 // lattice (hierarchy_pays: maps whose lobes are as wide as their normals' spread), eval sums the
@@ -62,6 +62,27 @@
 // error below 4e-8) use the continuum limit of the periodic sum, sum_i marginal_i(s) / map area,
 // which is exact as the footprint grows (the lobe's mean shift, averaged over the images, adds
 // sigma_h^4 J kappa^-1 J^T to C, which makes it sigma_h^2 J J^T).
+//
+// Prefiltered nodes (gaussian_params::prefilter_spread = tau > 0; off by default, since the
+// images cost memory and build time: docs/microstructure.md). Under a wide footprint the weight
+// w(u) = area norm exp(-m / 2) window(m) of glint_pndf_element_weight changes little across a
+// position-tree node, and each lobe is close to its footprint -> infinity limit L_i (the marginal,
+// cut at cull_s and divided by its kept mass as in the element term). A node whose elements' mean
+// squared distance from their mean (spread2) is at most tau^2 kappa_min then adds
+//   w(c(s)) sum_i L_i(s),  c(s) = mean + sum_i L_i(s) (u_i - mean) / sum_i L_i(s),
+// read from the node's image (both sums on a grid over its cell in s, 2 points per sigma_r,
+// bilinear, 16 bits each): c(s) is the lobes' own mean position at s, so the linear term of w
+// cancels, and the error is at most (1/2) sup|Hess w| sum_i L_i(s) |u_i - c(s)|^2, which
+// integrates over s to at most (1/2) sup|Hess w| N spread2. In the footprint's frame |Hess w| <=
+// (2 |phi'| + 4 m |phi''|) / kappa_min with phi(m) = exp(-m / 2) window(m), at most 1.21 / kappa_min
+// of w's peak (2 exp(-1/2), at m = 1), so the accepted nodes err by at most 0.61 tau^2 of their
+// elements' peak weight: about 3.8 tau^2 of the footprint's mass when they fill the cull_u = 3.5
+// ellipse (0.95% at tau 0.5). The grid's interpolation and the lobes' footprint shift (J_i
+// sigma_h^2 kappa^-1 e, of order sigma_h / sigma_P of a lobe's width) add to it; measured on the
+// flakes map of docs/microstructure.md: 0.4% to 0.7% in L1 at tau 0.5 (using the node's mean for
+// c(s), without the moments, 2.4% to 4.7%). Nodes take the images once the footprint is wide
+// enough, so D_P steps by up to that error as a footprint grows past a node's threshold. Only
+// eval and brdf use them; sample and pdf stay exact (pdf is the sampler's density).
 //
 // Domains. sigma_r in [1e-4, 1] (the kernels clamp it below at 1e-5); footprint covariances
 // finite and positive semi-definite (0 is a point footprint); s finite. Per-pixel calls never
@@ -119,6 +140,11 @@ struct gaussian_params {
     real cull_s = real(4);       // lobe culling radius (Mahalanobis), [1, 8]
     int direct_max_side = 128;   // eval_direct and GLSL: at most this many lattice steps each side
     pndf_hierarchy hierarchy = pndf_hierarchy::build;
+    // Prefiltered nodes (header comment): 0 keeps eval exact; tau > 0 builds node NDF images and
+    // lets eval and brdf sum a position-tree node as one image lookup where its elements' rms
+    // distance from their mean is at most tau footprint sds (the minor axis). [0, 0.5]; needs the
+    // hierarchy.
+    real prefilter_spread = 0;
 };
 
 // A half vector drawn from the P-NDF: its projected-disk point s, h = (s, sqrt(1 - |s|^2)), and
@@ -151,6 +177,10 @@ public:
         if (!(g.cull_u >= 2 && g.cull_u <= 8)) throw error(what + "cull_u = " + std::to_string(g.cull_u) + " is outside [2, 8]");
         if (!(g.cull_s >= 1 && g.cull_s <= 8)) throw error(what + "cull_s = " + std::to_string(g.cull_s) + " is outside [1, 8]");
         if (g.direct_max_side < 1) throw error(what + "direct_max_side = " + std::to_string(g.direct_max_side) + " is below 1");
+        if (!(g.prefilter_spread >= 0 && g.prefilter_spread <= real(0.5)))
+            throw error(what + "prefilter_spread = " + std::to_string(g.prefilter_spread) + " is outside [0, 0.5]");
+        if (g.prefilter_spread > 0 && g.hierarchy == pndf_hierarchy::none)
+            throw error(what + "prefilter_spread = " + std::to_string(g.prefilter_spread) + " needs the hierarchy (gaussian_params::hierarchy = build)");
         const long lw = static_cast<long>(map.width()) * g.elements_per_texel, lh = static_cast<long>(map.height()) * g.elements_per_texel;
         if (lw * lh > (1L << 26)) throw error(what + "more than 2^26 elements (" + std::to_string(lw) + " x " + std::to_string(lh) + ")");
         gaussian_pndf p;
@@ -192,6 +222,8 @@ public:
         // slope |p|^2 over both axes (isotropic: 2 Var per axis), plus the lobes' own 2 sigma_r^2.
         p.alpha_g_ = std::sqrt(std::max(real(1e-8), slope2 / static_cast<real>(n) + real(2) * g.sigma_r * g.sigma_r));
         if (g.hierarchy == pndf_hierarchy::build) p.build_grid();
+        p.prefilter_spread_ = g.prefilter_spread;
+        if (g.prefilter_spread > 0) p.build_node_ndfs();
         return p;
     }
 
@@ -213,19 +245,22 @@ public:
     }
 
     // D_P(s) through the hierarchy whatever its cost (eval picks it where it pays); the same
-    // elements as eval_direct without its box cap.
-    real eval_hierarchy(const texel_footprint<real>& fp, const vec2& s) const {
+    // elements as eval_direct without its box cap. With prefilter_spread tau > 0 (a map built
+    // with node NDF images), nodes within tau footprint sds take their images (tau = 0: exact).
+    real eval_hierarchy(const texel_footprint<real>& fp, const vec2& s, real prefilter_spread = 0) const {
         if (!(s.x * s.x + s.y * s.y < real(1))) return real(0);
         const frame f = prepare(fp);
-        return hierarchy_sum(f, s);
+        return hierarchy_sum(f, s, prefilter_spread);
     }
 
-    // D_P(s): the hierarchy, or the direct sum where that is cheaper, or the continuum limit for
-    // footprints of many periods.
+    // D_P(s): the hierarchy (with the prefiltered nodes where the map was built with them and the
+    // footprint is wide enough for one), or the direct sum where that is cheaper, or the
+    // continuum limit for footprints of many periods.
     real eval(const texel_footprint<real>& fp, const vec2& s) const {
         if (!(s.x * s.x + s.y * s.y < real(1))) return real(0);
         const frame f = prepare(fp);
         if (large_footprint(f)) return continuum_limit(s);
+        if (prefilter_applies(f, prefilter_spread_)) return hierarchy_sum(f, s, prefilter_spread_);
         if (!hierarchy_pays(f, s)) return direct_sum(f, s, sampling_params());
         return hierarchy_sum(f, s);
     }
@@ -356,11 +391,18 @@ public:
         for (const std::uint8_t l : level_) ++count[l];
         return count;
     }
-    // Elements, s-boxes, the cells' element lists and their position trees.
+    // Elements, s-boxes, the cells' element lists and their position trees, and the node NDF images.
     std::size_t memory_bytes() const {
         return data_.size() * sizeof(vec4) + bound_.size() * sizeof(vec4) + level_.size() + cell_begin_.size() * sizeof(std::uint32_t) +
-               listed_.size() * sizeof(listed_element) + node_begin_.size() * sizeof(std::uint32_t) + nodes_.size() * sizeof(box);
+               listed_.size() * sizeof(listed_element) + node_begin_.size() * sizeof(std::uint32_t) + nodes_.size() * sizeof(box) +
+               node_ndf_of_.size() * sizeof(std::int32_t) + node_ndfs_.size() * sizeof(node_ndf) + ndf_images_.size() * sizeof(std::uint16_t);
     }
+    // The bytes of the node NDF images alone (0 without prefilter_spread), and how many nodes have one.
+    std::size_t prefilter_bytes() const {
+        return node_ndf_of_.size() * sizeof(std::int32_t) + node_ndfs_.size() * sizeof(node_ndf) + ndf_images_.size() * sizeof(std::uint16_t);
+    }
+    std::size_t prefiltered_node_count() const { return node_ndfs_.size(); }
+    real prefilter_spread() const { return prefilter_spread_; }
 
     // Whether a footprint is wide enough for the continuum limit: periodic map, and the periodic
     // images' Poisson-summation error exp(-2 pi^2 k' / P^2) below 1e-8 on both axes, with
@@ -380,6 +422,12 @@ public:
 private:
     struct box {
         float x0, y0, x1, y1;
+    };
+    // The cells' lists hold copies of the element and its s-box, so that a query reads them in
+    // order instead of gathering from the lattice.
+    struct listed_element {
+        element el;
+        vec4 bound;
     };
     // Elements per leaf of a position tree. A query costs more per node it visits than per
     // element it tests in a leaf's run, which it reads in memory order (on the flakes map of
@@ -473,12 +521,19 @@ private:
         return 1.2 * listed * area / map_area + 48.0 * level_count() < area / spacing2;
     }
 
-    // The hierarchy's D_P(s): the cell holding s at every level.
-    real hierarchy_sum(const frame& f, const vec2& s) const {
+    // The hierarchy's D_P(s): the cell holding s at every level; nodes whose elements lie within
+    // tau footprint sds of their mean (tau > 0) through their NDF images.
+    real hierarchy_sum(const frame& f, const vec2& s, real tau = 0) const {
         if (level_size_.empty()) return direct_sum(f, s, sampling_params());
+        const float spread2 = node_ndfs_.empty() ? -1.0f : static_cast<float>(tau * tau * std::min(f.kappa.x, f.kappa.y));
         real sum = 0;
-        for (int l = 0; l < level_count(); ++l) sum += query(cell_of(s, l), f, s);
+        for (int l = 0; l < level_count(); ++l) sum += query(cell_of(s, l), f, s, spread2);
         return sum;
+    }
+
+    // Whether some node NDF image is within tau footprint sds (else the exact paths decide).
+    bool prefilter_applies(const frame& f, real tau) const {
+        return !node_ndfs_.empty() && tau > 0 && min_ndf_spread2_ <= static_cast<float>(tau * tau * std::min(f.kappa.x, f.kappa.y));
     }
 
     // Whether s lies outside an element's oriented s-box b, where its term is 0 for every footprint.
@@ -502,8 +557,10 @@ private:
         return level_first_[static_cast<std::size_t>(l)] + static_cast<std::size_t>(cx + m * cy);
     }
 
-    // The elements of cell c that pass the culling, over the periodic images the box touches.
-    real query(std::size_t c, const frame& f, const vec2& s) const {
+    // The elements of cell c that pass the culling, over the periodic images the box touches;
+    // nodes with an NDF image whose elements' mean squared distance from their mean is at most
+    // spread2 (texels^2; < 0: none) as one lookup.
+    real query(std::size_t c, const frame& f, const vec2& s, float spread2) const {
         const std::uint32_t begin = cell_begin_[c], end = cell_begin_[c + 1];
         if (begin == end) return real(0);
         const std::uint32_t leaves = (end - begin + leaf_size - 1) / leaf_size;
@@ -545,6 +602,13 @@ private:
                             sum += kernels::glint_pndf_element(x.el, vec2(x.el.us.x, x.el.us.y) + offset, f, s, k_);
                         }
                     } else {
+                        if (spread2 >= 0) {
+                            const std::int32_t t = node_ndf_of_[node_begin_[c] + node];
+                            if (t >= 0 && node_ndfs_[static_cast<std::size_t>(t)].spread2 <= spread2) {
+                                sum += node_ndf_term(node_ndfs_[static_cast<std::size_t>(t)], f, s, offset);
+                                continue;
+                            }
+                        }
                         // The left child on top, so that leaves come in memory order (which the
                         // hardware prefetcher follows: 1.3x to 1.8x faster than the reverse).
                         stack[top++] = 2 * node + 1;
@@ -553,6 +617,176 @@ private:
                 }
             }
         return sum;
+    }
+
+    // A position-tree node's NDF image (prefilter_spread): on an n x n grid of points over its
+    // cell in s (spacing 1 / inv_delta from s0), the sums over the node's elements of their culled
+    // marginal lobes L_i(s) (the footprint -> infinity limit of each lobe, cut at cull_s and
+    // divided by its kept mass, as the element term), as 16-bit fractions of lobe_scale, and of
+    // L_i(s) (u_i - mean), as signed 16-bit fractions of moment_scale; three per point from
+    // `offset` in ndf_images_.
+    struct node_ndf {
+        float mean_x, mean_y, spread2;  // the elements' mean position and mean squared distance from it (texels)
+        float s0x, s0y, inv_delta;
+        float lobe_scale, moment_scale;
+        std::uint32_t n, offset;
+    };
+    // Grid points per sigma_r (spacing sigma_r / 2): bilinear interpolation of a lobe of sd sigma_r
+    // sampled at spacing d errs by at most d^2 / (8 sigma_r^2) = 3.1% of its peak per axis; the
+    // measured L1 error (with the footprint's) is in docs/microstructure.md (3 points per sigma_r
+    // took 2.25x the memory for 0.5x the error at tau 0.4 on the flakes map there).
+    static constexpr double ndf_points_per_sigma_r = 2;
+    // Levels whose cells would need more points per side have no images (their nodes stay exact).
+    static constexpr int max_ndf_points = 513;
+    // The images of one height of a position tree take at most this many times the bytes of their
+    // elements' copies (so all heights at most twice that): on the flakes map of
+    // docs/microstructure.md, 1 left the coarse levels' cells without images small enough for
+    // footprints of sd 512 (2.8x faster than exact there; this 7.7x, float images at 4).
+    static constexpr std::size_t ndf_memory_ratio = 2;
+
+    // A node's terms through its image: the footprint's weight at the elements' mean position
+    // where they reach s (first order in u exact; header comment) times the sum of their lobes.
+    real node_ndf_term(const node_ndf& t, const frame& f, const vec2& s, const vec2& offset) const {
+        const float last = static_cast<float>(t.n - 1);
+        const float gx = std::clamp((static_cast<float>(s.x) - t.s0x) * t.inv_delta, 0.0f, last);
+        const float gy = std::clamp((static_cast<float>(s.y) - t.s0y) * t.inv_delta, 0.0f, last);
+        const std::uint32_t ix = std::min(static_cast<std::uint32_t>(gx), t.n - 2), iy = std::min(static_cast<std::uint32_t>(gy), t.n - 2);
+        const float fx = gx - static_cast<float>(ix), fy = gy - static_cast<float>(iy);
+        const std::uint16_t* p = ndf_images_.data() + t.offset + 3 * (ix + t.n * iy);
+        const std::uint16_t* q = p + 3 * t.n;
+        const float w00 = (1 - fx) * (1 - fy), w10 = fx * (1 - fy), w01 = (1 - fx) * fy, w11 = fx * fy;
+        const float lobes = w00 * p[0] + w10 * p[3] + w01 * q[0] + w11 * q[3];
+        if (!(lobes > 0)) return real(0);
+        const auto sgn = [](std::uint16_t v) { return static_cast<float>(static_cast<std::int16_t>(v)); };
+        const float mx = w00 * sgn(p[1]) + w10 * sgn(p[4]) + w01 * sgn(q[1]) + w11 * sgn(q[4]);
+        const float my = w00 * sgn(p[2]) + w10 * sgn(p[5]) + w01 * sgn(q[2]) + w11 * sgn(q[5]);
+        const float to_u = t.moment_scale / t.lobe_scale / lobes;
+        const vec2 u(static_cast<real>(t.mean_x + mx * to_u) + offset.x, static_cast<real>(t.mean_y + my * to_u) + offset.y);
+        return kernels::glint_pndf_element_weight(u, f, k_) / k_.area * static_cast<real>(lobes * t.lobe_scale);
+    }
+
+    // Adds element x's culled marginal lobe L(s) and L(s) (u - mean) to the image `img` (n x n
+    // points from s0, spacing delta): each row's points inside the cull_s ellipse, exp(-q / 2)
+    // stepped along the row by its ratio recurrence (q is quadratic in s).
+    void splat_lobe(const listed_element& x, const glm::dvec2& mean, const glm::dvec2& s0, double delta, int n, double* img) const {
+        const double sr = std::max(static_cast<double>(k_.sigma_r), 1e-5), sh2 = static_cast<double>(k_.sigma_h) * static_cast<double>(k_.sigma_h);
+        const glm::dvec4 j(x.el.jac);
+        const double c11 = sr * sr + sh2 * (j.x * j.x + j.z * j.z), c22 = sr * sr + sh2 * (j.y * j.y + j.w * j.w), c12 = sh2 * (j.x * j.y + j.z * j.w);
+        const double det = c11 * c22 - c12 * c12;
+        if (!(det > 0)) return;
+        const double p11 = c22 / det, p22 = c11 / det, p12 = -c12 / det, cs2 = static_cast<double>(k_.cull_s) * static_cast<double>(k_.cull_s);
+        const double norm = 1 / (6.283185307179586 * -std::expm1(-0.5 * cs2) * std::sqrt(det));
+        const glm::dvec2 c(static_cast<double>(x.el.us.z), static_cast<double>(x.el.us.w));
+        const glm::dvec2 du(static_cast<double>(x.el.us.x) - mean.x, static_cast<double>(x.el.us.y) - mean.y);
+        const double ry = std::sqrt(cs2 * c22);
+        const int y0 = std::max(0, static_cast<int>(std::ceil((c.y - ry - s0.y) / delta))), y1 = std::min(n - 1, static_cast<int>(std::floor((c.y + ry - s0.y) / delta)));
+        const double ratio_step = std::exp(-p11 * delta * delta);
+        for (int iy = y0; iy <= y1; ++iy) {
+            const double dy = s0.y + iy * delta - c.y;
+            const double disc = p12 * p12 * dy * dy - p11 * (p22 * dy * dy - cs2);
+            if (!(disc >= 0)) continue;
+            const double root = std::sqrt(disc);
+            const int x0 = std::max(0, static_cast<int>(std::ceil((c.x + (-p12 * dy - root) / p11 - s0.x) / delta)));
+            const int x1 = std::min(n - 1, static_cast<int>(std::floor((c.x + (-p12 * dy + root) / p11 - s0.x) / delta)));
+            if (x1 < x0) continue;
+            const double dx0 = s0.x + x0 * delta - c.x;
+            double value = norm * std::exp(-0.5 * (p11 * dx0 * dx0 + 2 * p12 * dx0 * dy + p22 * dy * dy));
+            double ratio = std::exp(-0.5 * (p11 * (2 * dx0 * delta + delta * delta) + 2 * p12 * dy * delta));
+            double* row = img + 3 * (static_cast<std::size_t>(iy) * static_cast<std::size_t>(n));
+            for (int ix = x0; ix <= x1; ++ix) {
+                row[3 * ix] += value, row[3 * ix + 1] += value * du.x, row[3 * ix + 2] += value * du.y;
+                value *= ratio, ratio *= ratio_step;
+            }
+        }
+    }
+
+    // The node NDF images (prefilter_spread > 0). At each grid level whose cells take at most
+    // max_ndf_points per side at ndf_points_per_sigma_r, every position-tree node of at least
+    // min_count elements has one, where min_count makes one height's images take at most the
+    // bytes of its elements' copies (all heights at most twice): the lowest such height's images
+    // from the elements, each higher one as the sum of its children's (moments moved to its mean).
+    void build_node_ndfs() {
+        node_ndf_of_.assign(nodes_.size(), -1);
+        node_ndfs_.clear(), ndf_images_.clear();
+        min_ndf_spread2_ = std::numeric_limits<float>::max();
+        const double delta_target = std::max(static_cast<double>(k_.sigma_r), 1e-5) / ndf_points_per_sigma_r;
+        for (int l = 0; l < level_count(); ++l) {
+            const int m = level_size_[static_cast<std::size_t>(l)];
+            const double cw = 2.0 / m;
+            const int n = static_cast<int>(std::ceil(cw / delta_target)) + 1;
+            if (n > max_ndf_points) continue;
+            const double delta = cw / (n - 1);
+            const std::size_t floats = 3 * static_cast<std::size_t>(n) * static_cast<std::size_t>(n);
+            int h0 = 1;
+            while ((std::size_t{leaf_size} << h0) * sizeof(listed_element) * ndf_memory_ratio < floats * sizeof(std::uint16_t)) ++h0;
+            for (int cy = 0; cy < m; ++cy)
+                for (int cx = 0; cx < m; ++cx) {
+                    const std::size_t c = level_first_[static_cast<std::size_t>(l)] + static_cast<std::size_t>(cx + m * cy);
+                    const std::uint32_t begin = cell_begin_[c], end = cell_begin_[c + 1];
+                    const std::uint32_t leaves = (end - begin + leaf_size - 1) / leaf_size;
+                    std::uint32_t p2 = 1;
+                    while (p2 < leaves) p2 *= 2;
+                    if (p2 < (1u << h0)) continue;
+                    const glm::dvec2 s0(-1 + cx * cw, -1 + cy * cw);
+                    struct built {
+                        std::vector<double> img;
+                        glm::dvec2 mean{0};
+                        double spread2 = 0, count = 0;
+                    };
+                    const std::uint32_t first_node = p2 >> h0;  // nodes [first_node, 2 first_node) are at height h0
+                    std::vector<built> b(2 * first_node);
+                    for (std::uint32_t i = first_node; i < 2 * first_node; ++i) {
+                        const std::uint32_t e0 = begin + leaf_size * ((i << h0) - p2), e1 = std::min(end, begin + leaf_size * (((i + 1) << h0) - p2));
+                        if (e0 >= e1) continue;
+                        built& t = b[i];
+                        t.count = e1 - e0;
+                        for (std::uint32_t r = e0; r < e1; ++r) t.mean += glm::dvec2(listed_[r].el.us.x, listed_[r].el.us.y);
+                        t.mean /= t.count;
+                        for (std::uint32_t r = e0; r < e1; ++r) {
+                            const glm::dvec2 d = glm::dvec2(listed_[r].el.us.x, listed_[r].el.us.y) - t.mean;
+                            t.spread2 += glm::dot(d, d) / t.count;
+                        }
+                        t.img.assign(floats, 0.0);
+                        for (std::uint32_t r = e0; r < e1; ++r) splat_lobe(listed_[r], t.mean, s0, delta, n, t.img.data());
+                    }
+                    for (std::uint32_t i = first_node - 1; i >= 1; --i) {
+                        const built &a = b[2 * i], &z = b[2 * i + 1];
+                        if (a.count == 0) continue;  // the left child holds the first elements
+                        built& t = b[i];
+                        t.count = a.count + z.count;
+                        t.mean = (a.mean * a.count + z.mean * z.count) / t.count;
+                        const glm::dvec2 da = a.mean - t.mean, dz = z.mean - t.mean;
+                        t.spread2 = (a.count * (a.spread2 + glm::dot(da, da)) + z.count * (z.spread2 + glm::dot(dz, dz))) / t.count;
+                        t.img = a.img;
+                        for (std::size_t k = 0; k < floats; k += 3) {
+                            t.img[k + 1] += a.img[k] * da.x, t.img[k + 2] += a.img[k] * da.y;
+                            if (z.count == 0) continue;
+                            t.img[k] += z.img[k], t.img[k + 1] += z.img[k + 1] + z.img[k] * dz.x, t.img[k + 2] += z.img[k + 2] + z.img[k] * dz.y;
+                        }
+                    }
+                    for (std::uint32_t i = 1; i < 2 * first_node; ++i) {
+                        const built& t = b[i];
+                        if (t.count == 0) continue;
+                        // 16-bit fractions of each channel's largest magnitude (rounded to nearest).
+                        double top = 0, top_moment = 0;
+                        for (std::size_t k = 0; k < floats; k += 3)
+                            top = std::max(top, t.img[k]), top_moment = std::max({top_moment, std::fabs(t.img[k + 1]), std::fabs(t.img[k + 2])});
+                        if (!(top > 0)) continue;
+                        const double lobe_scale = top / 65535, moment_scale = std::max(top_moment, 1e-30 * top) / 32767;
+                        node_ndf_of_[node_begin_[c] + i] = static_cast<std::int32_t>(node_ndfs_.size());
+                        node_ndfs_.push_back(node_ndf{static_cast<float>(t.mean.x), static_cast<float>(t.mean.y), static_cast<float>(t.spread2),
+                                                      static_cast<float>(s0.x), static_cast<float>(s0.y), static_cast<float>(1 / delta),
+                                                      static_cast<float>(lobe_scale), static_cast<float>(moment_scale), static_cast<std::uint32_t>(n),
+                                                      static_cast<std::uint32_t>(ndf_images_.size())});
+                        min_ndf_spread2_ = std::min(min_ndf_spread2_, static_cast<float>(t.spread2));
+                        for (std::size_t k = 0; k < floats; k += 3) {
+                            ndf_images_.push_back(static_cast<std::uint16_t>(std::lround(std::min(t.img[k] / lobe_scale, 65535.0))));
+                            for (std::size_t a = 1; a <= 2; ++a)
+                                ndf_images_.push_back(static_cast<std::uint16_t>(static_cast<std::int16_t>(std::lround(std::clamp(t.img[k + a] / moment_scale, -32767.0, 32767.0)))));
+                        }
+                    }
+                }
+        }
     }
 
     // Calls fn(cell index) for each cell of grid level l that element e's oriented s-box overlaps
@@ -664,15 +898,15 @@ private:
     std::vector<std::uint8_t> level_;             // the grid level listing each element
     std::vector<int> level_size_;                 // cells per side at each level, finest first
     std::vector<std::size_t> level_first_;        // each level's first cell
-    // The cells' lists, each a copy of the element and its s-box, so that a query reads them in
-    // order instead of gathering from the lattice.
-    struct listed_element {
-        element el;
-        vec4 bound;
-    };
     std::vector<listed_element> listed_;
     std::vector<std::uint32_t> cell_begin_, node_begin_;
     std::vector<box> nodes_;
+    // prefilter_spread: the node NDF images (node_ndf_of_ parallel to nodes_, -1 where none).
+    real prefilter_spread_ = 0;
+    std::vector<std::int32_t> node_ndf_of_;
+    std::vector<node_ndf> node_ndfs_;
+    std::vector<std::uint16_t> ndf_images_;
+    float min_ndf_spread2_ = 0;
 };
 
 }  // namespace glint

@@ -165,53 +165,57 @@ section microstructure_section(double min_time) {
             md << "| " << fmt(cu) << " | " << fmt(cs) << " | " << fmt(l1 / norm) << " | " << fmt(t, "%.0f") << " |\n";
             out.csv_rows += "pndf,cull_u=" + fmt(cu) + " cull_s=" + fmt(cs) + ",float,relative L1 vs reference," + fmt(l1 / norm) + "," + fmt(t) + ",,\n";
         }
-    // Prefiltered nodes (gaussian_params::prefilter_spread) on the flakes map.
-    {
-        p.kind = glint::pattern::flakes, p.slope_rms = 0.15;
-        const glint::normal_map flakes = glint::make_normal_map(p);
-        const auto exact = glint::gaussian_pndf<float>::build(flakes, g);
+    // Prefiltered nodes (gaussian_params::prefilter_spread) on both maps; tau against error and
+    // time on flakes.
+    md << "\n### Prefiltered nodes (gaussian_params::prefilter_spread)\n\nThe maps above built with prefilter_spread = 0.5: "
+          "position-tree nodes whose elements lie within 0.5 footprint sds (rms) of their mean are summed from their NDF images "
+          "(glint/gaussian.hpp: 2 points per sigma_r, 16 bits, the first moment in u). Exact: eval without them (on `noise` the "
+          "lattice loop, which is cheaper there than the exact hierarchy); prefiltered: eval, which takes the hierarchy with the "
+          "images wherever a node qualifies. Error: the relative L1 distance over s to the exact P-NDF, estimated as the mean of "
+          "|D' - D| / D at 4 s per footprint drawn from the exact P-NDF (its sampler), over the queries shown.\n\n";
+    struct probe {
+        glint::texel_footprint<float> fp;
+        glm::vec2 s;
+        double exact;
+    };
+    for (const auto kind : {glint::pattern::flakes, glint::pattern::noise}) {
+        p.kind = kind, p.slope_rms = kind == glint::pattern::flakes ? 0.15 : 0.1;
+        const glint::normal_map m = glint::make_normal_map(p);
+        const auto exact = glint::gaussian_pndf<float>::build(m, g);
         glint::gaussian_params<float> gp = g;
         gp.prefilter_spread = 0.5f;
         const auto t0 = std::chrono::steady_clock::now();
-        const auto pre = glint::gaussian_pndf<float>::build(flakes, gp);
+        const auto pre = glint::gaussian_pndf<float>::build(m, gp);
         const double build = seconds_since(t0);
         const double texels = static_cast<double>(p.width) * p.height;
-        md << "\n### Prefiltered nodes (gaussian_params::prefilter_spread)\n\nThe `flakes` map above built with prefilter_spread = 0.5: "
-              "position-tree nodes whose elements lie within 0.5 footprint sds (rms) of their mean are summed from their NDF images "
-              "(glint/gaussian.hpp: 2 points per sigma_r, 16 bits, the first moment in u). Build "
-           << fmt(build, "%.1f") << " s (" << fmt(1e9 * build / texels, "%.0f") << " ns per texel, against the hierarchy's figure above); images "
-           << fmt(static_cast<double>(pre.prefilter_bytes()) / 1e6, "%.1f") << " MB (" << fmt(static_cast<double>(pre.prefilter_bytes()) / texels, "%.0f")
-           << " bytes per texel, " << pre.prefiltered_node_count() << " nodes) on top of the hierarchy's "
-           << fmt(static_cast<double>(exact.memory_bytes()) / 1e6, "%.1f")
-           << " MB. Error: the relative L1 distance over s to the exact P-NDF, estimated as the mean of |D' - D| / D at 4 s per "
-              "footprint drawn from the exact P-NDF (its sampler), over the queries shown.\n\n"
-              "| footprint sd (texels) | exact eval ns / query | prefiltered eval ns / query | speed-up | relative L1 over s |\n|---|---|---|---|---|\n";
-        struct probe {
-            glint::texel_footprint<float> fp;
-            glm::vec2 s;
-            double exact;
-        };
-        const auto probes = [&](const std::vector<query>& q, int m) {
-            std::vector<probe> out_probes;
-            for (int i = 0; i < m; ++i)
+        md << "`" << glint::pattern_name(kind) << "`: build " << fmt(build, "%.1f") << " s (" << fmt(1e9 * build / texels, "%.0f")
+           << " ns per texel, against the hierarchy's figure above); images " << fmt(static_cast<double>(pre.prefilter_bytes()) / 1e6, "%.1f") << " MB ("
+           << fmt(static_cast<double>(pre.prefilter_bytes()) / texels, "%.0f") << " bytes per texel, " << pre.prefiltered_node_count()
+           << " nodes) on top of the hierarchy's " << fmt(static_cast<double>(exact.memory_bytes()) / 1e6, "%.1f") << " MB.\n\n"
+           << "| footprint sd (texels) | exact eval ns / query | prefiltered eval ns / query | speed-up | relative L1 over s |\n|---|---|---|---|---|\n";
+        const auto probes = [&](const std::vector<query>& q, int n) {
+            std::vector<probe> v;
+            for (int i = 0; i < n; ++i)
                 for (std::uint32_t k = 0; k < 4; ++k) {
                     const auto u = [&](std::uint32_t stream) { return glint::unit_from_bits<float>(glint::pcg3d(glm::uvec3(static_cast<std::uint32_t>(i), k, stream)).x); };
                     const auto& x = q[static_cast<std::size_t>(i)];
                     const auto d = exact.sample(x.fp, u(1), u(2), u(3));
-                    if (d.valid) out_probes.push_back({x.fp, d.s, static_cast<double>(exact.eval(x.fp, d.s))});
+                    if (d.valid) v.push_back({x.fp, d.s, static_cast<double>(exact.eval(x.fp, d.s))});
                 }
-            return out_probes;
+            return v;
         };
         const auto l1_of = [&](const std::vector<probe>& v, float tau) {
             double e = 0;
-            for (const auto& x : v) e += std::fabs(static_cast<double>(pre.eval_hierarchy(x.fp, x.s, tau)) - x.exact) / x.exact;
+            for (const auto& x : v)
+                e += std::fabs(static_cast<double>(tau == 0.5f ? pre.eval(x.fp, x.s) : pre.eval_hierarchy(x.fp, x.s, tau)) - x.exact) / x.exact;
             return e / static_cast<double>(std::max<std::size_t>(v.size(), 1));
         };
+        const bool flakes = kind == glint::pattern::flakes;
         std::map<float, std::pair<std::vector<query>, std::vector<probe>>> at;
-        for (const float sigma : {8.0f, 64.0f, 128.0f, 256.0f, 512.0f}) {
+        for (const float sigma : flakes ? std::vector<float>{8, 64, 128, 256, 512} : std::vector<float>{8, 64, 512}) {
             const int n = sigma >= 256 ? 8 : 32;
             const auto q = queries(p, sigma, n);
-            const std::string tag = std::to_string(static_cast<int>(sigma));
+            const std::string tag = std::string(glint::pattern_name(kind)) + "_" + std::to_string(static_cast<int>(sigma));
             add("pndf_exact_" + tag, [&exact, q](std::size_t i) {
                 const auto& x = q[i % q.size()];
                 benchmark::DoNotOptimize(exact.eval(x.fp, x.s));
@@ -225,10 +229,12 @@ section microstructure_section(double min_time) {
             const double e = ns.at("pndf_exact_" + tag), f = ns.at("pndf_prefiltered_" + tag), l1 = l1_of(at[sigma].second, 0.5f);
             md << "| " << sigma << " | " << fmt(e, "%.0f") << " | " << fmt(f, "%.0f") << " | " << fmt(e / f, "%.1f") << "x | " << fmt(l1) << " ("
                << at[sigma].second.size() << " s) |\n";
-            out.csv_rows += "pndf,flakes prefiltered tau=0.5 sigma_P=" + fmt(sigma) + ",float,relative L1 vs exact," + fmt(l1) + "," + fmt(f) + "," +
-                            fmt(f / e) + ",exact hierarchy\n";
+            out.csv_rows += "pndf," + std::string(glint::pattern_name(kind)) + " prefiltered tau=0.5 sigma_P=" + fmt(sigma) + ",float,relative L1 vs exact," +
+                            fmt(l1) + "," + fmt(f) + "," + fmt(f / e) + ",exact eval\n";
         }
-        md << "\nprefilter_spread (tau) against error and time (eval_hierarchy with tau; 0 is the exact hierarchy):\n\n"
+        md << "\n";
+        if (!flakes) continue;
+        md << "prefilter_spread (tau) against error and time on `flakes` (eval_hierarchy with tau; 0 is the exact hierarchy):\n\n"
               "| tau | sd 64: ns / query | relative L1 | sd 512: ns / query | relative L1 |\n|---|---|---|---|---|\n";
         for (const float tau : {0.0f, 0.25f, 0.5f, 0.7f, 1.0f}) {
             md << "| " << fmt(tau);
@@ -243,6 +249,7 @@ section microstructure_section(double min_time) {
             }
             md << " |\n";
         }
+        md << "\n";
     }
     md << "\n";
     out.markdown = md.str();

@@ -79,8 +79,8 @@
 // elements' peak weight: about 3.8 tau^2 of the footprint's mass when they fill the cull_u = 3.5
 // ellipse (0.95% at tau 0.5). The grid's interpolation and the lobes' footprint shift (J_i
 // sigma_h^2 kappa^-1 e, of order sigma_h / sigma_P of a lobe's width) add to it; measured on the
-// flakes map of docs/microstructure.md: 0.4% to 0.7% in L1 at tau 0.5 (using the node's mean for
-// c(s), without the moments, 2.4% to 4.7%). Nodes take the images once the footprint is wide
+// flakes map of docs/microstructure.md: 0.25% to 0.9% in L1 at tau 0.5 for footprints of sd 64 to
+// 512 (with the node's mean for c(s), without the moments, up to 4.7%). Nodes take the images once the footprint is wide
 // enough, so D_P steps by up to that error as a footprint grows past a node's threshold. Only
 // eval and brdf use them; sample and pdf stay exact (pdf is the sampler's density).
 //
@@ -260,8 +260,9 @@ public:
         if (!(s.x * s.x + s.y * s.y < real(1))) return real(0);
         const frame f = prepare(fp);
         if (large_footprint(f)) return continuum_limit(s);
-        if (prefilter_applies(f, prefilter_spread_)) return hierarchy_sum(f, s, prefilter_spread_);
-        if (!hierarchy_pays(f, s)) return direct_sum(f, s, sampling_params());
+        const bool pays = hierarchy_pays(f, s);
+        if (prefilter_applies(f, prefilter_spread_, pays ? min_ndf_spread2_ : median_ndf_spread2_)) return hierarchy_sum(f, s, prefilter_spread_);
+        if (!pays) return direct_sum(f, s, sampling_params());
         return hierarchy_sum(f, s);
     }
 
@@ -531,9 +532,13 @@ private:
         return sum;
     }
 
-    // Whether some node NDF image is within tau footprint sds (else the exact paths decide).
-    bool prefilter_applies(const frame& f, real tau) const {
-        return !node_ndfs_.empty() && tau > 0 && min_ndf_spread2_ <= static_cast<float>(tau * tau * std::min(f.kappa.x, f.kappa.y));
+    // Whether nodes of the given spread2 are within tau footprint sds: eval takes the images where
+    // some node is (the smallest spread2) and the hierarchy pays, and where the median node is
+    // when the lattice loop is cheaper than the exact hierarchy (on the noise map of
+    // docs/microstructure.md at footprint sd 64, the images through the hierarchy took 1.1x the
+    // loop's time).
+    bool prefilter_applies(const frame& f, real tau, float spread2) const {
+        return !node_ndfs_.empty() && tau > 0 && spread2 <= static_cast<float>(tau * tau * std::min(f.kappa.x, f.kappa.y));
     }
 
     // Whether s lies outside an element's oriented s-box b, where its term is 0 for every footprint.
@@ -633,15 +638,17 @@ private:
     };
     // Grid points per sigma_r (spacing sigma_r / 2): bilinear interpolation of a lobe of sd sigma_r
     // sampled at spacing d errs by at most d^2 / (8 sigma_r^2) = 3.1% of its peak per axis; the
-    // measured L1 error (with the footprint's) is in docs/microstructure.md (3 points per sigma_r
-    // took 2.25x the memory for 0.5x the error at tau 0.4 on the flakes map there).
+    // measured L1 error of the whole approximation is in docs/microstructure.md (3 points per
+    // sigma_r take 2.25x the memory, so nodes twice as wide under the same memory rule).
     static constexpr double ndf_points_per_sigma_r = 2;
     // Levels whose cells would need more points per side have no images (their nodes stay exact).
     static constexpr int max_ndf_points = 513;
     // The images of one height of a position tree take at most this many times the bytes of their
-    // elements' copies (so all heights at most twice that): on the flakes map of
-    // docs/microstructure.md, 1 left the coarse levels' cells without images small enough for
-    // footprints of sd 512 (2.8x faster than exact there; this 7.7x, float images at 4).
+    // elements' copies (so all heights at most twice that). On the flakes map of
+    // docs/microstructure.md at footprint sd 512, float images at most as large as their copies
+    // (3 points per sigma_r) left the coarse levels' cells without nodes small enough, and eval was
+    // 2.8x faster than exact at tau 0.7; at 4x (2 points per sigma_r) 7.7x at tau 0.5. 16-bit
+    // values at 2x give the same nodes as float ones at 4x.
     static constexpr std::size_t ndf_memory_ratio = 2;
 
     // A node's terms through its image: the footprint's weight at the elements' mean position
@@ -709,6 +716,7 @@ private:
         node_ndf_of_.assign(nodes_.size(), -1);
         node_ndfs_.clear(), ndf_images_.clear();
         min_ndf_spread2_ = std::numeric_limits<float>::max();
+        std::vector<float> spreads;
         const double delta_target = std::max(static_cast<double>(k_.sigma_r), 1e-5) / ndf_points_per_sigma_r;
         for (int l = 0; l < level_count(); ++l) {
             const int m = level_size_[static_cast<std::size_t>(l)];
@@ -779,6 +787,7 @@ private:
                                                       static_cast<float>(lobe_scale), static_cast<float>(moment_scale), static_cast<std::uint32_t>(n),
                                                       static_cast<std::uint32_t>(ndf_images_.size())});
                         min_ndf_spread2_ = std::min(min_ndf_spread2_, static_cast<float>(t.spread2));
+                        spreads.push_back(static_cast<float>(t.spread2));
                         for (std::size_t k = 0; k < floats; k += 3) {
                             ndf_images_.push_back(static_cast<std::uint16_t>(std::lround(std::min(t.img[k] / lobe_scale, 65535.0))));
                             for (std::size_t a = 1; a <= 2; ++a)
@@ -786,6 +795,11 @@ private:
                         }
                     }
                 }
+        }
+        median_ndf_spread2_ = min_ndf_spread2_;
+        if (!spreads.empty()) {
+            std::nth_element(spreads.begin(), spreads.begin() + static_cast<std::ptrdiff_t>(spreads.size() / 2), spreads.end());
+            median_ndf_spread2_ = spreads[spreads.size() / 2];
         }
     }
 
@@ -906,7 +920,7 @@ private:
     std::vector<std::int32_t> node_ndf_of_;
     std::vector<node_ndf> node_ndfs_;
     std::vector<std::uint16_t> ndf_images_;
-    float min_ndf_spread2_ = 0;
+    float min_ndf_spread2_ = 0, median_ndf_spread2_ = 0;  // over the nodes with images
 };
 
 }  // namespace glint

@@ -634,7 +634,8 @@ private:
         float mean_x, mean_y, spread2;  // the elements' mean position and mean squared distance from it (texels)
         float s0x, s0y, inv_delta;
         float lobe_scale, moment_scale;
-        std::uint32_t n, offset;
+        std::uint32_t n;
+        std::size_t offset;  // 2^26 elements' images can pass 2^32 values
     };
     // Grid points per sigma_r (spacing sigma_r / 2): bilinear interpolation of a lobe of sd sigma_r
     // sampled at spacing d errs by at most d^2 / (8 sigma_r^2) = 3.1% of its peak per axis; the
@@ -785,7 +786,7 @@ private:
                         node_ndfs_.push_back(node_ndf{static_cast<float>(t.mean.x), static_cast<float>(t.mean.y), static_cast<float>(t.spread2),
                                                       static_cast<float>(s0.x), static_cast<float>(s0.y), static_cast<float>(1 / delta),
                                                       static_cast<float>(lobe_scale), static_cast<float>(moment_scale), static_cast<std::uint32_t>(n),
-                                                      static_cast<std::uint32_t>(ndf_images_.size())});
+                                                      ndf_images_.size()});
                         min_ndf_spread2_ = std::min(min_ndf_spread2_, static_cast<float>(t.spread2));
                         spreads.push_back(static_cast<float>(t.spread2));
                         for (std::size_t k = 0; k < floats; k += 3) {

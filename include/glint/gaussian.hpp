@@ -683,7 +683,7 @@ private:
         const double det = c11 * c22 - c12 * c12;
         if (!(det > 0)) return;
         const double p11 = c22 / det, p22 = c11 / det, p12 = -c12 / det, cs2 = static_cast<double>(k_.cull_s) * static_cast<double>(k_.cull_s);
-        const double norm = 1 / (6.283185307179586 * -std::expm1(-0.5 * cs2) * std::sqrt(det));
+        const double norm = 1 / (6.283185307179586 * static_cast<double>(kernels::glint_pndf_kept_mass(k_.cull_s)) * std::sqrt(det));
         const glm::dvec2 c(static_cast<double>(x.el.us.z), static_cast<double>(x.el.us.w));
         const glm::dvec2 du(static_cast<double>(x.el.us.x) - mean.x, static_cast<double>(x.el.us.y) - mean.y);
         const double ry = std::sqrt(cs2 * c22);

@@ -29,7 +29,10 @@ GLINT_FN glint_footprint glint_footprint_from_derivatives(vec2 duvdx, vec2 duvdy
     f.area = det;
     f.major = sqrt(l2);
     f.minor = (l2 > real(0)) ? det / f.major : real(0);  // sqrt(det^2 / l2) without cancellation
-    real angle = real(0.5) * atan(real(2) * b, a - c);    // (-pi/2, pi/2]
+    // glint_atan2 (core.glsl, 3.5 ulp: docs/conventions.md) rather than the builtin: bit-identical
+    // in C++ and GLSL, whose atan has no stated precision, and in C++ about a third of the
+    // instructions of libm's atan2f (callgrind: 134 a call in glint_frame_loop point-stochastic 2).
+    real angle = real(0.5) * glint_atan2(real(2) * b, a - c);  // [-pi/2, pi/2]
     f.angle = (angle < real(0)) ? angle + GLINT_PI : angle;
     f.angle = (f.angle >= GLINT_PI) ? real(0) : f.angle;
     return f;
@@ -384,9 +387,18 @@ GLINT_FN glint_grid_pixel glint_grid_pixel_setup_stochastic(vec2 uv, vec2 duvdx,
 GLINT_FN void glint_grid_pixel_vertices(GLINT_INOUT(glint_grid_pixel) px, glint_grid_params g) {
     if (px.ready) return;
     px.v = glint_footprint_vertices(px.uv, px.f, g, px.lattice_u);
-    for (int i = 0; i < 12; ++i) {
-        px.skip_scale[i] = max(px.N * px.v.share[i], real(2)) * real(1.0001);
-        px.word[i] = px.v.hash[i].x;
+    // The skip test reads 4 vertices where there are at most 4 (one lattice point), else 12
+    // (glint_skip_test_masks); each loop with a constant count, which GCC vectorises.
+    if (px.v.count <= 4) {
+        for (int i = 0; i < 4; ++i) {
+            px.skip_scale[i] = max(px.N * px.v.share[i], real(2)) * real(1.0001);
+            px.word[i] = px.v.hash[i].x;
+        }
+    } else {
+        for (int i = 0; i < 12; ++i) {
+            px.skip_scale[i] = max(px.N * px.v.share[i], real(2)) * real(1.0001);
+            px.word[i] = px.v.hash[i].x;
+        }
     }
     px.ready = true;
 }

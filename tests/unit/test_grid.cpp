@@ -259,14 +259,11 @@ K::glint_grid_estimate estimate_by_definition(glm::vec2 uv, glm::vec2 dx, glm::v
     K::glint_grid_pixel_vertices(px, g);
     glm::ivec2 base;
     const glm::vec4 mu = K::glint_slope_weights(light.slope, g.slope_cell, base);
+    const glm::vec4 p = K::glint_grid_corner_probabilities(g, light, base);
     for (int i = 0; i < px.v.count; ++i)
         for (int j = 0; j < 4; ++j) {
             const glm::ivec2 c = base + glm::ivec2(j & 1, j >> 1);
-            float pj = glm::clamp(light.p, 0.0f, 1.0f);
-            if (light.kind == 0) {
-                const float area = g.slope_cell * g.slope_cell * K::glint_slope_area_density(light.ndf, glm::vec2(c) * g.slope_cell, light.alpha);
-                pj = glm::clamp(area / glm::max(light.total_area, 1.0f), 0.0f, 1.0f);
-            }
+            const float pj = p[j];
             if (!(mu[j] > 0) || !(pj > 0)) continue;
             const std::uint32_t h1 = K::glint_cell_draw_word(px.v.hash[i].x, K::glint_slope_cell_key(c));
             const float u1 = K::glint_open_unit_from_bits(h1);

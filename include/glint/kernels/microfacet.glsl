@@ -37,12 +37,33 @@ GLINT_FN real glint_ndf(int ndf, vec3 m, vec2 alpha) {
 // The density of microfacet area (unprojected, as the glint count uses it) per unit of absolute
 // slope s = -(m.x, m.y) / m.z: P22(s) sqrt(1 + |s|^2), where P22 is the slope density of the
 // projected area (KK25 Sec. 3.2: facets are distributed by D(h) / D_H). Even in s.
-GLINT_FN real glint_slope_area_density(int ndf, vec2 s, vec2 alpha) {
+// Its roughness terms, inv_alpha = 1 / alpha and norm = 1 / (pi alpha.x alpha.y) for alpha clamped
+// (glint_slope_density_terms), are the same at every slope: a caller that evaluates several
+// slopes of one NDF (the grid's four slope corners per light) makes them once
+// (glint_slope_area_density_at), one division a slope instead of five.
+struct glint_slope_density_terms {
+    vec2 inv_alpha;
+    real norm;
+};
+
+GLINT_FN glint_slope_density_terms glint_slope_density_terms_of(vec2 alpha) {
     alpha = glint_clamp_roughness(alpha);
-    real u2 = (s.x / alpha.x) * (s.x / alpha.x) + (s.y / alpha.y) * (s.y / alpha.y);
-    real j = sqrt(real(1) + dot(s, s)) / (GLINT_PI * alpha.x * alpha.y);
+    glint_slope_density_terms t;
+    t.inv_alpha = vec2(real(1)) / alpha;
+    t.norm = real(1) / (GLINT_PI * alpha.x * alpha.y);
+    return t;
+}
+
+GLINT_FN real glint_slope_area_density_at(int ndf, vec2 s, glint_slope_density_terms t) {
+    vec2 r = s * t.inv_alpha;
+    real u2 = r.x * r.x + r.y * r.y;
+    real j = sqrt(real(1) + dot(s, s)) * t.norm;
     if (ndf == GLINT_NDF_BECKMANN) return (u2 > real(87)) ? real(0) : j * exp(-u2);
     return j / ((real(1) + u2) * (real(1) + u2));
+}
+
+GLINT_FN real glint_slope_area_density(int ndf, vec2 s, vec2 alpha) {
+    return glint_slope_area_density_at(ndf, s, glint_slope_density_terms_of(alpha));
 }
 
 // Smith's Lambda(w) for w.z > 0 (returns 0 otherwise; callers use G1). With

@@ -447,8 +447,8 @@ GLINT_FN_OUT_OF_LINE glint_draw_masks glint_skip_test_masks(GLINT_INOUT(glint_gr
 
 // p_j at the four slope corners sbase + (j & 1, j >> 1): the light's p, or for a point light
 // slope_cell^2 times the unprojected slope density at the corner over D_H (clamped to [0, 1]), with
-// the NDF's roughness terms and cell^2 / D_H once a light (glint_slope_density_terms): four
-// divisions a light instead of twenty.
+// the NDF's roughness terms and cell^2 / D_H once a light (glint_slope_density_terms): eight
+// divisions a light instead of twenty (one per corner, four for the terms).
 GLINT_FN vec4 glint_grid_corner_probabilities(glint_grid_params g, glint_grid_light light, ivec2 sbase) {
     if (light.kind != 0) return vec4(clamp(light.p, real(0), real(1)));
     glint_slope_density_terms terms = glint_slope_density_terms_of(light.alpha);

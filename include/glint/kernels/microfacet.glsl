@@ -40,7 +40,7 @@ GLINT_FN real glint_ndf(int ndf, vec3 m, vec2 alpha) {
 // Its roughness terms, inv_alpha = 1 / alpha and norm = 1 / (pi alpha.x alpha.y) for alpha clamped
 // (glint_slope_density_terms), are the same at every slope: a caller that evaluates several
 // slopes of one NDF (the grid's four slope corners per light) makes them once
-// (glint_slope_area_density_at), one division a slope instead of five.
+// (glint_slope_area_density_at), one division a slope instead of four.
 struct glint_slope_density_terms {
     vec2 inv_alpha;
     real norm;

@@ -384,22 +384,21 @@ GLINT_FN glint_grid_pixel glint_grid_pixel_setup_stochastic(vec2 uv, vec2 duvdx,
     return px;
 }
 
+// The skip test's per-vertex bound and word for the first `vertices` vertices.
+GLINT_FN void glint_grid_skip_inputs(GLINT_INOUT(glint_grid_pixel) px, int vertices) {
+    for (int i = 0; i < vertices; ++i) {
+        px.skip_scale[i] = max(px.N * px.v.share[i], real(2)) * real(1.0001);
+        px.word[i] = px.v.hash[i].x;
+    }
+}
+
 GLINT_FN void glint_grid_pixel_vertices(GLINT_INOUT(glint_grid_pixel) px, glint_grid_params g) {
     if (px.ready) return;
     px.v = glint_footprint_vertices(px.uv, px.f, g, px.lattice_u);
     // The skip test reads 4 vertices where there are at most 4 (one lattice point), else 12
-    // (glint_skip_test_masks); each loop with a constant count, which GCC vectorises.
-    if (px.v.count <= 4) {
-        for (int i = 0; i < 4; ++i) {
-            px.skip_scale[i] = max(px.N * px.v.share[i], real(2)) * real(1.0001);
-            px.word[i] = px.v.hash[i].x;
-        }
-    } else {
-        for (int i = 0; i < 12; ++i) {
-            px.skip_scale[i] = max(px.N * px.v.share[i], real(2)) * real(1.0001);
-            px.word[i] = px.v.hash[i].x;
-        }
-    }
+    // (glint_skip_test_masks); each call with a constant count, whose loop GCC vectorises.
+    if (px.v.count <= 4) glint_grid_skip_inputs(px, 4);
+    else glint_grid_skip_inputs(px, 12);
     px.ready = true;
 }
 

@@ -716,8 +716,7 @@ private:
     void build_node_ndfs() {
         node_ndf_of_.assign(nodes_.size(), -1);
         node_ndfs_.clear(), ndf_images_.clear();
-        min_ndf_spread2_ = std::numeric_limits<float>::max();
-        std::vector<float> spreads;
+        std::vector<float> spreads;  // of the nodes with images
         const double delta_target = std::max(static_cast<double>(k_.sigma_r), 1e-5) / ndf_points_per_sigma_r;
         for (int l = 0; l < level_count(); ++l) {
             const int m = level_size_[static_cast<std::size_t>(l)];
@@ -787,7 +786,6 @@ private:
                                                       static_cast<float>(s0.x), static_cast<float>(s0.y), static_cast<float>(1 / delta),
                                                       static_cast<float>(lobe_scale), static_cast<float>(moment_scale), static_cast<std::uint32_t>(n),
                                                       ndf_images_.size()});
-                        min_ndf_spread2_ = std::min(min_ndf_spread2_, static_cast<float>(t.spread2));
                         spreads.push_back(static_cast<float>(t.spread2));
                         for (std::size_t k = 0; k < floats; k += 3) {
                             ndf_images_.push_back(static_cast<std::uint16_t>(std::lround(std::min(t.img[k] / lobe_scale, 65535.0))));
@@ -797,8 +795,9 @@ private:
                     }
                 }
         }
-        median_ndf_spread2_ = min_ndf_spread2_;
+        min_ndf_spread2_ = median_ndf_spread2_ = std::numeric_limits<float>::max();
         if (!spreads.empty()) {
+            min_ndf_spread2_ = *std::min_element(spreads.begin(), spreads.end());
             std::nth_element(spreads.begin(), spreads.begin() + static_cast<std::ptrdiff_t>(spreads.size() / 2), spreads.end());
             median_ndf_spread2_ = spreads[spreads.size() / 2];
         }

@@ -414,6 +414,7 @@ GLINT_FN void glint_grid_pixel_vertices(GLINT_INOUT(glint_grid_pixel) px, glint_
 // get bits too (from zero hashes and shares), which nothing reads.
 struct glint_draw_masks {
     int bits[12];
+    int any;  // the bits of all vertices or'ed: 0 where no vertex draws at any corner
 };
 
 // The test's bits for the first `vertices` vertices.
@@ -440,7 +441,11 @@ GLINT_FN_OUT_OF_LINE glint_draw_masks glint_skip_test_masks(GLINT_INOUT(glint_gr
     else glint_skip_test_bits(px, masks, corner_key, corner_p, 12);
     int corner_bits = (1 << corners) - 1;
     int always = skip_test ? 0 : corner_bits;
-    for (int i = 0; i < 12; ++i) masks.bits[i] = (masks.bits[i] | always) & corner_bits;
+    masks.any = 0;
+    for (int i = 0; i < 12; ++i) {
+        masks.bits[i] = (masks.bits[i] | always) & corner_bits;
+        masks.any |= (i < px.v.count) ? masks.bits[i] : 0;
+    }
     return masks;
 }
 
@@ -504,6 +509,7 @@ GLINT_FN glint_grid_estimate glint_grid_sample_pixel(GLINT_INOUT(glint_grid_pixe
     // that this replaced: 1720 instead of 2693 instructions per extra point light on the CPU
     // (callgrind, bench/glint_frame_loop lights 8 1 4 against lights 1 1 4).
     glint_draw_masks masks = glint_skip_test_masks(px, corner_key, corner_p, corners, glint_skip_test_applies(g));
+    if (masks.any == 0) return o;  // sparse glints: most lights draw nowhere (R = 0 exactly)
     // The three triangle vertices of a lattice point draw with the same N w_L (unless the
     // log-normal factor is on) and p_j: the mean-preserving sampler sets up once per corner for them.
     glint_binomial_cache cache[4];

@@ -430,7 +430,7 @@ GLINT_FN void glint_skip_test_bits(GLINT_INOUT(glint_grid_pixel) px, GLINT_INOUT
     }
 }
 
-GLINT_FN_OUT_OF_LINE glint_draw_masks glint_skip_test_masks(GLINT_INOUT(glint_grid_pixel) px, uint corner_key[4], real corner_p[4], int corners,
+GLINT_FN_OUT_OF_LINE glint_draw_masks glint_skip_test_masks(GLINT_INOUT(glint_grid_pixel) px, uint corner_key[4], real corner_p[4], int live,
                                                              bool skip_test) {
     glint_draw_masks masks;
     for (int i = 0; i < 12; ++i) masks.bits[i] = 0;
@@ -439,11 +439,10 @@ GLINT_FN_OUT_OF_LINE glint_draw_masks glint_skip_test_masks(GLINT_INOUT(glint_gr
     // variable count it did not: 20% more instructions in the point-light frame).
     if (px.v.count <= 4) glint_skip_test_bits(px, masks, corner_key, corner_p, 4);
     else glint_skip_test_bits(px, masks, corner_key, corner_p, 12);
-    int corner_bits = (1 << corners) - 1;
-    int always = skip_test ? 0 : corner_bits;
+    int always = skip_test ? 0 : live;
     masks.any = 0;
     for (int i = 0; i < 12; ++i) {
-        masks.bits[i] = (masks.bits[i] | always) & corner_bits;
+        masks.bits[i] = (masks.bits[i] | always) & live;
         masks.any |= (i < px.v.count) ? masks.bits[i] : 0;
     }
     return masks;
@@ -486,29 +485,22 @@ GLINT_FN glint_grid_estimate glint_grid_sample_pixel(GLINT_INOUT(glint_grid_pixe
         return o;
     }
     if (!(N > real(1e-30))) return o;  // no footprint, no microfacets
-    glint_grid_pixel_vertices(px, g);
-    // The slope corners that can reflect, in plain arrays (a vector indexed in a loop costs a
-    // switch per access in C++), and the skip test's constant part, hoisted out of the loops.
-    int corners = 0;
+    if (!px.ready) glint_grid_pixel_vertices(px, g);  // the check inline: GCC calls the function out of line
+    // The slope corners in plain arrays (a vector indexed in a loop costs a switch per access in
+    // C++), the skip test's constant part hoisted out of the loops; bit j of `live` is set where
+    // corner j can reflect (m_j > 0 and p_j > 0), and only those draw.
+    int live = 0;
     real corner_m[4];
     real corner_p[4];
     uint corner_key[4];
     for (int j = 0; j < 4; ++j) {
-        corner_m[j] = real(0);
-        corner_p[j] = real(0);
-        corner_key[j] = 0u;
+        bool on = mu[j] > real(0) && p[j] > real(0);
+        corner_m[j] = mu[j];
+        corner_p[j] = on ? p[j] : real(0);
+        corner_key[j] = glint_slope_cell_key(sbase + ivec2(j & 1, j >> 1));
+        live |= on ? (1 << j) : 0;
     }
-    for (int j = 0; j < 4; ++j) {
-        if (!(mu[j] > real(0)) || !(p[j] > real(0))) continue;
-        corner_m[corners] = mu[j];
-        corner_p[corners] = p[j];
-        corner_key[corners] = glint_slope_cell_key(sbase + ivec2(j & 1, j >> 1));
-        ++corners;
-    }
-    // Which vertices draw at which corners. Against the four-wide test on the float u1 per vertex
-    // that this replaced: 1720 instead of 2693 instructions per extra point light on the CPU
-    // (callgrind, bench/glint_frame_loop lights 8 1 4 against lights 1 1 4).
-    glint_draw_masks masks = glint_skip_test_masks(px, corner_key, corner_p, corners, glint_skip_test_applies(g));
+    glint_draw_masks masks = glint_skip_test_masks(px, corner_key, corner_p, live, glint_skip_test_applies(g));
     if (masks.any == 0) return o;  // sparse glints: most lights draw nowhere (R = 0 exactly)
     // The three triangle vertices of a lattice point draw with the same N w_L (unless the
     // log-normal factor is on) and p_j: the mean-preserving sampler sets up once per corner for them.

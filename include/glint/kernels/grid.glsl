@@ -411,10 +411,10 @@ GLINT_FN void glint_grid_pixel_vertices(GLINT_INOUT(glint_grid_pixel) px, glint_
 // draw is surely 0, so the estimate is the same (tests/unit/test_grid.cpp checks it against R's
 // definition). The loops have no branches and read contiguous arrays, so that the C++ compiler
 // vectorises them; out of line, because GCC does not once it is inlined. Vertices past px.v.count
-// get bits too (from zero hashes and shares), which nothing reads.
+// get bits too (from zero hashes and shares), which `any` leaves out and the draw loop never reads.
 struct glint_draw_masks {
     int bits[12];
-    int any;  // the bits of all vertices or'ed: 0 where no vertex draws at any corner
+    int any;  // the bits of the pixel's px.v.count vertices or'ed: 0 where none draws at any corner
 };
 
 // The test's bits for the first `vertices` vertices.

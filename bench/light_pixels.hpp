@@ -44,16 +44,26 @@ inline glm::vec3 smooth_point(const glm::vec3& wi, const glm::vec3& wo, glm::vec
     return spec * glm::vec3(glint::fresnel_conductor(0.155f, 4.83f, c), glint::fresnel_conductor(0.117f, 3.12f, c), glint::fresnel_conductor(0.138f, 2.15f, c));
 }
 
+// Pixel i's glint parameters (the flake paint's density, a seed per pixel) and, in mode 3, its
+// uniform that picks one lattice point (-1 otherwise: all four).
+inline glint::grid_params<float> light_pixel_params(int i) {
+    glint::grid_params<float> g;
+    g.log_density = 5, g.seed = static_cast<std::uint32_t>(i);
+    return g;
+}
+
+inline float light_pixel_lattice_u(int i, int mode) {
+    return mode == 3 ? glint::unit_from_bits<float>(glint::pcg3d(glm::uvec3(static_cast<std::uint32_t>(i), 0x1a77u, 0x51u)).x) : -1.0f;
+}
+
 // Pixel i of lp shaded by its first k lights. mode 0: smooth; 1: glints on one footprint shared by
 // every light (grid_pixel); 2: glints through a footprint of each light's own (grid_sample each);
 // 3: as 1 on one lattice point drawn per pixel (grid_pixel_setup with a lattice_u).
 inline glm::vec3 shade_light_pixel(const light_pixels& lp, int i, int k, int mode) {
     const auto at = static_cast<std::size_t>(i);
-    glint::grid_params<float> g;
-    g.log_density = 5, g.seed = static_cast<std::uint32_t>(i);
+    const glint::grid_params<float> g = light_pixel_params(i);
     const float dh = glint::total_area(glint::ndf::ggx, glm::vec2(0.25f));
-    const float lattice_u = mode == 3 ? glint::unit_from_bits<float>(glint::pcg3d(glm::uvec3(static_cast<std::uint32_t>(i), 0x1a77u, 0x51u)).x) : -1.0f;
-    auto px = glint::grid_pixel_setup(lp.uv[at], lp.duvdx[at], lp.duvdy[at], g, lattice_u);
+    auto px = glint::grid_pixel_setup(lp.uv[at], lp.duvdx[at], lp.duvdy[at], g, light_pixel_lattice_u(i, mode));
     glm::vec3 sum(0);
     for (int l = 0; l < k; ++l) {
         glm::vec3 hv;

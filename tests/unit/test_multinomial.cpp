@@ -267,7 +267,9 @@ TEST_CASE("the one-pass draw puts each trial in the bin its 32 digits fall in, a
     CHECK(first_bin == doctest::Approx(first_expected).epsilon(0.05));  // the draws are not all in one bin
 }
 
-TEST_CASE("C++'s four lane groups at once give each group the bins of its own one-group pass") {
+// The W-group pass against W one-group passes: `pass` runs it (W = 4 or 8).
+template <std::size_t W, class Pass>
+void check_lane_group_pass(Pass pass) {
     using MF = glint::detail::glsl::kernels<float>;
     long groups = 0, differ = 0, batches = 0;
     for (int K : {2, 3, 4, 5, 6, 7, 8})  // every instantiation of the pass (T = K)
@@ -279,19 +281,19 @@ TEST_CASE("C++'s four lane groups at once give each group the bins of its own on
             }
             const auto t = MF::glint_multinomial_make_tree(pr, K);
             const auto c = MF::glint_multinomial_exact_all_thresholds(t);
-            // Four groups of different sizes (1 to 32 lanes, some empty) and words.
-            std::uint32_t lanes[4], frac[4], state[4], step[4];
-            for (int v = 0; v < 4; ++v) {
+            // W groups of different sizes (1 to 32 lanes, some empty) and words.
+            std::uint32_t lanes[W], frac[W], state[W], step[W];
+            for (std::size_t v = 0; v < W; ++v) {
                 const glm::uvec3 h = glint::pcg3d(glm::uvec3(trial, static_cast<std::uint32_t>(v), 0x4242u));
                 const int size = static_cast<int>(h.z % 34);  // 33: empty
                 lanes[v] = size >= 33 ? 0u : size == 32 ? 0xffffffffu : (2u << size) - 1u;
                 frac[v] = (size < 32 && h.z % 3 == 0) ? 1u << size : 0u;
                 state[v] = h.x, step[v] = h.y | 1u;
             }
-            MF::glint_multinomial_group_bins bins[4];
-            MF::glint_multinomial_exact_all_groups_x4(c, t.K, lanes, frac, state, step, bins);
+            MF::glint_multinomial_group_bins bins[W];
+            pass(c, t.K, lanes, frac, state, step, bins);
             ++batches;
-            for (int v = 0; v < 4; ++v) {
+            for (std::size_t v = 0; v < W; ++v) {
                 const auto one = MF::glint_multinomial_exact_all_group(c, t.K, lanes[v], state[v], step[v]);
                 // The bins of the one-group pass, as glint_multinomial_exact_all_counts reads them.
                 std::uint32_t previous = 0;
@@ -308,7 +310,18 @@ TEST_CASE("C++'s four lane groups at once give each group the bins of its own on
                 ++groups;
             }
         }
-    MESSAGE(batches << " four-group passes, " << groups << " groups, " << differ << " differ from their one-group pass");
-    CHECK(groups == 7 * 400 * 4);
+    MESSAGE(batches << " " << W << "-group passes, " << groups << " groups, " << differ << " differ from their one-group pass");
+    CHECK(groups == 7 * 400 * static_cast<long>(W));
     CHECK(differ == 0);
+}
+
+TEST_CASE("C++'s four and eight lane groups at once give each group the bins of its own one-group pass") {
+    using MF = glint::detail::glsl::kernels<float>;
+    check_lane_group_pass<4>([](auto&&... a) { MF::glint_multinomial_exact_all_groups_x4(a...); });
+    // The eight-group pass compiled for the baseline target (two vectors of four), on any CPU...
+    check_lane_group_pass<8>([](auto&&... a) { MF::glint_multinomial_exact_all_groups<8>(a...); });
+    // ... and for AVX2, where glint_multinomial_exact_all_many runs it (the CPU has AVX2).
+    MESSAGE("eight-group pass with AVX2: " << std::string(MF::glint_multinomial_wide_groups() ? "run" : "not run (the CPU has no AVX2; never used here)"));
+    if (MF::glint_multinomial_wide_groups())
+        check_lane_group_pass<8>([](auto&&... a) { MF::glint_multinomial_exact_all_groups_x8_avx2(a...); });
 }

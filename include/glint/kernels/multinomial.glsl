@@ -365,15 +365,16 @@ GLINT_FN void glint_multinomial_exact_all(real N, glint_multinomial_tree t, uvec
 }
 
 #if !defined(GLINT_GLSL)
-// C++ only: glint_multinomial_exact_all_group for four lane groups with one set of thresholds at
+// C++ only: glint_multinomial_exact_all_group for W lane groups with one set of thresholds at
 // once (the IBL's grid vertices of a pixel share their probabilities), their words side by side,
-// so that the hashes, comparisons and bit counts run in vector registers (SSE2 on x86-64; GCC's
-// and Clang's vector extension). Per group and bin: the number of its trials in the bin other
-// than the fractional one (lane mask `frac`, 0 where the group has none), and the bin that trial
-// fell in (8: the rest). Each group's bins are those of glint_multinomial_exact_all_group: the
-// steps that the other groups still need leave a group whose lanes are all decided unchanged
-// (tests/unit/test_multinomial.cpp compares them). GPUs run one fragment a thread: GLSL keeps the
-// single group.
+// so that the hashes, comparisons and bit counts run in vector registers (GCC's and Clang's vector
+// extension): W = 4 in SSE2's, the baseline of x86-64, and where the CPU has AVX2, W = 8 in its
+// (GCC on x86-64; chosen at run time, glint_multinomial_wide_groups). Per group and bin: the number
+// of its trials in the bin other than the fractional one (lane mask `frac`, 0 where the group has
+// none), and the bin that trial fell in (8: the rest). Each group's bins are those of
+// glint_multinomial_exact_all_group: the steps that the other groups still need leave a group whose
+// lanes are all decided unchanged (tests/unit/test_multinomial.cpp compares them), so the counts
+// are the same at either width. GPUs run one fragment a thread: GLSL keeps the single group.
 struct glint_multinomial_group_bins {
     int count[8];
     int frac_bin;
@@ -384,35 +385,46 @@ struct glint_multinomial_group_bins {
 // loop for T rounded up to 4 or 8 at run time, as before, spilled the words to the stack: a digit
 // took about 85 instructions at K = 3, IBL K = 4's lit levels, against 63 now; the IBL estimates
 // of glint_frame_loop ibl 4 1 count 37.5M instructions instead of 43.5M, ibl 8 1 56.4M instead of
-// 62.3M, the same sums; callgrind, GCC 12.)
-template <int T>
-GLINT_FN_OUT_OF_LINE void glint_multinomial_exact_all_groups_x4_of(const glint_multinomial_thresholds& c, const uint lanes_in[4], const uint frac_in[4],
-                                                                   const uint state_in[4], const uint step_in[4], glint_multinomial_group_bins bins[4]) {
+// 62.3M, the same sums; callgrind, GCC 12.) Always inlined, so that the AVX2 function below
+// compiles it with AVX2.
+template <int T, int W>
+__attribute__((always_inline)) static inline void glint_multinomial_exact_all_groups_pass(const glint_multinomial_thresholds& c, const uint lanes_in[],
+                                                                                          const uint frac_in[], const uint state_in[],
+                                                                                          const uint step_in[], glint_multinomial_group_bins bins[]) {
     typedef uint u32x4 __attribute__((vector_size(16)));
+    typedef uint u32x8 __attribute__((vector_size(32)));
     typedef int i32x4 __attribute__((vector_size(16)));
+    typedef int i32x8 __attribute__((vector_size(32)));
     typedef unsigned long long u64x2 __attribute__((vector_size(16)));
-    u32x4 lanes, frac, state, step;
-    for (int v = 0; v < 4; ++v) {
+    typedef unsigned long long u64x4 __attribute__((vector_size(32)));
+    static_assert(W == 4 || W == 8, "four or eight lane groups");
+    typedef typename std::conditional<W == 8, u32x8, u32x4>::type u32xw;
+    typedef typename std::conditional<W == 8, i32x8, i32x4>::type i32xw;
+    typedef typename std::conditional<W == 8, u64x4, u64x2>::type u64xw;
+    u32xw lanes, frac, state, step;
+    for (int v = 0; v < W; ++v) {
         lanes[v] = lanes_in[v];
         frac[v] = frac_in[v];
         state[v] = state_in[v];
         step[v] = step_in[v];
     }
-    const u32x4 none = {0u, 0u, 0u, 0u};
-    u32x4 threshold[8];  // the first T of each are used
-    u32x4 open[8];
-    u32x4 below[8];
+    const u32xw none = lanes ^ lanes;
+    u32xw threshold[8];  // the first T of each are used
+    u32xw open[8];
+    u32xw below[8];
     for (int k = 0; k < T; ++k) {
         threshold[k] = none + c.c[k];
         open[k] = c.full[k] ? none : lanes;
         below[k] = c.full[k] ? lanes : none;
     }
     for (int digit = 0; digit < 32; ++digit) {
-        u32x4 any = open[0];
+        u32xw any = open[0];
         for (int k = 1; k < T; ++k) any |= open[k];
-        u64x2 halves = reinterpret_cast<u64x2>(any);
-        if ((halves[0] | halves[1]) == 0u) break;
-        u32x4 word = state;  // glint_hash_u32, four at once
+        u64xw wide = reinterpret_cast<u64xw>(any);
+        unsigned long long still_open = 0u;
+        for (int h = 0; h < W / 2; ++h) still_open |= wide[h];
+        if (still_open == 0u) break;
+        u32xw word = state;  // glint_hash_u32, W at once
         word ^= word >> 16u;
         word *= 0x7feb352du;
         word ^= word >> 15u;
@@ -420,44 +432,76 @@ GLINT_FN_OUT_OF_LINE void glint_multinomial_exact_all_groups_x4_of(const glint_m
         word ^= word >> 16u;
         state += step;
         for (int k = 0; k < T; ++k) {
-            u32x4 c_digit = none - (threshold[k] >> 31u);  // all ones where c_k's digit is 1
+            u32xw c_digit = none - (threshold[k] >> 31u);  // all ones where c_k's digit is 1
             threshold[k] <<= 1u;
-            u32x4 decided = open[k] & (word ^ c_digit);
+            u32xw decided = open[k] & (word ^ c_digit);
             below[k] |= decided & c_digit;
             open[k] &= ~decided;
         }
     }
-    u32x4 previous = none;
-    const i32x4 bin_of = {0, 0, 0, 0};
-    i32x4 frac_bin = bin_of + 8;
-    for (int v = 0; v < 4; ++v)
+    u32xw previous = none;
+    const i32xw bin_of = reinterpret_cast<i32xw>(none);
+    i32xw frac_bin = bin_of + 8;
+    for (int v = 0; v < W; ++v)
         for (int k = T; k < 8; ++k) bins[v].count[k] = 0;  // bins k >= K hold nothing
     for (int k = 0; k < T; ++k) {
-        u32x4 in_bin = below[k] & ~previous;
+        u32xw in_bin = below[k] & ~previous;
         previous = below[k];
-        u32x4 x = in_bin & ~frac;  // glint_bit_count, four at once
+        u32xw x = in_bin & ~frac;  // glint_bit_count, W at once
         x = x - ((x >> 1u) & 0x55555555u);
         x = (x & 0x33333333u) + ((x >> 2u) & 0x33333333u);
         x = (x + (x >> 4u)) & 0x0f0f0f0fu;
         x = (x * 0x01010101u) >> 24u;
         frac_bin = ((in_bin & frac) != 0u) ? (bin_of + k) : frac_bin;
-        for (int v = 0; v < 4; ++v) bins[v].count[k] = int(x[v]);
+        for (int v = 0; v < W; ++v) bins[v].count[k] = int(x[v]);
     }
-    for (int v = 0; v < 4; ++v) bins[v].frac_bin = frac_bin[v];
+    for (int v = 0; v < W; ++v) bins[v].frac_bin = frac_bin[v];
 }
 
-GLINT_FN void glint_multinomial_exact_all_groups_x4(const glint_multinomial_thresholds& c, int K, const uint lanes_in[4], const uint frac_in[4],
-                                                    const uint state_in[4], const uint step_in[4], glint_multinomial_group_bins bins[4]) {
+// The pass of W groups for K bins (K clamped to 2..8).
+template <int W>
+__attribute__((always_inline)) static inline void glint_multinomial_exact_all_groups(const glint_multinomial_thresholds& c, int K, const uint lanes_in[],
+                                                                                     const uint frac_in[], const uint state_in[], const uint step_in[],
+                                                                                     glint_multinomial_group_bins bins[]) {
     switch (clamp(K, 2, 8)) {
-        case 2: glint_multinomial_exact_all_groups_x4_of<2>(c, lanes_in, frac_in, state_in, step_in, bins); break;
-        case 3: glint_multinomial_exact_all_groups_x4_of<3>(c, lanes_in, frac_in, state_in, step_in, bins); break;
-        case 4: glint_multinomial_exact_all_groups_x4_of<4>(c, lanes_in, frac_in, state_in, step_in, bins); break;
-        case 5: glint_multinomial_exact_all_groups_x4_of<5>(c, lanes_in, frac_in, state_in, step_in, bins); break;
-        case 6: glint_multinomial_exact_all_groups_x4_of<6>(c, lanes_in, frac_in, state_in, step_in, bins); break;
-        case 7: glint_multinomial_exact_all_groups_x4_of<7>(c, lanes_in, frac_in, state_in, step_in, bins); break;
-        default: glint_multinomial_exact_all_groups_x4_of<8>(c, lanes_in, frac_in, state_in, step_in, bins); break;
+        case 2: glint_multinomial_exact_all_groups_pass<2, W>(c, lanes_in, frac_in, state_in, step_in, bins); break;
+        case 3: glint_multinomial_exact_all_groups_pass<3, W>(c, lanes_in, frac_in, state_in, step_in, bins); break;
+        case 4: glint_multinomial_exact_all_groups_pass<4, W>(c, lanes_in, frac_in, state_in, step_in, bins); break;
+        case 5: glint_multinomial_exact_all_groups_pass<5, W>(c, lanes_in, frac_in, state_in, step_in, bins); break;
+        case 6: glint_multinomial_exact_all_groups_pass<6, W>(c, lanes_in, frac_in, state_in, step_in, bins); break;
+        case 7: glint_multinomial_exact_all_groups_pass<7, W>(c, lanes_in, frac_in, state_in, step_in, bins); break;
+        default: glint_multinomial_exact_all_groups_pass<8, W>(c, lanes_in, frac_in, state_in, step_in, bins); break;
     }
 }
+
+// Four groups, for the baseline target.
+GLINT_FN_OUT_OF_LINE void glint_multinomial_exact_all_groups_x4(const glint_multinomial_thresholds& c, int K, const uint lanes_in[4],
+                                                                const uint frac_in[4], const uint state_in[4], const uint step_in[4],
+                                                                glint_multinomial_group_bins bins[4]) {
+    glint_multinomial_exact_all_groups<4>(c, K, lanes_in, frac_in, state_in, step_in, bins);
+}
+
+// Eight groups in AVX2's registers, where the CPU has them (glint_multinomial_wide_groups): eight
+// 32-bit multiplies in one instruction, which SSE2 does in about six for four. On this project's
+// 2-core AMD EPYC (CPU), glint_report's IBL glint frames, two rounds alternating with the
+// four-group pass: K = 4 (linear knob) 3984 and 4270 against 4314 and 5033 us, K = 8 5467 and 5675
+// against 6571 and 6752 us. Eight groups in SSE2's registers (two per vector) were slower than
+// two four-group passes (each digit waits for the slowest of eight groups): not kept.
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(GLINT_NO_AVX2)
+__attribute__((noinline, target("avx2"))) static void glint_multinomial_exact_all_groups_x8_avx2(const glint_multinomial_thresholds& c, int K,
+                                                                                                const uint lanes_in[8], const uint frac_in[8],
+                                                                                                const uint state_in[8], const uint step_in[8],
+                                                                                                glint_multinomial_group_bins bins[8]) {
+    glint_multinomial_exact_all_groups<8>(c, K, lanes_in, frac_in, state_in, step_in, bins);
+}
+
+// Whether glint_multinomial_exact_all_many draws eight groups at once (the CPU has AVX2).
+static bool glint_multinomial_wide_groups() { return __builtin_cpu_supports("avx2"); }
+#else
+static void glint_multinomial_exact_all_groups_x8_avx2(const glint_multinomial_thresholds&, int, const uint[8], const uint[8], const uint[8],
+                                                       const uint[8], glint_multinomial_group_bins[8]) {}
+static bool glint_multinomial_wide_groups() { return false; }
+#endif
 
 // glint_multinomial_exact_all for the draws i < count with draw[i] set (each with N[i] from 4 to
 // 63 and root words words[i]; N total >= 1), all with tree t: their lane groups, one or two a
@@ -480,9 +524,13 @@ GLINT_FN void glint_multinomial_exact_all_many(const glint_multinomial_tree& t, 
         state[groups] = words[i].z, step[groups] = words[i].y | 1u;
         ++groups;
     }
-    for (int j = groups; j < ((groups + 3) / 4) * 4; ++j) lanes[j] = 0u, frac[j] = 0u, state[j] = 0u, step[j] = 1u;
+    const int width = glint_multinomial_wide_groups() ? 8 : 4;
+    for (int j = groups; j < ((groups + width - 1) / width) * width; ++j) lanes[j] = 0u, frac[j] = 0u, state[j] = 0u, step[j] = 1u;
     glint_multinomial_group_bins bins[24];
-    for (int j = 0; j < groups; j += 4) glint_multinomial_exact_all_groups_x4(c, t.K, lanes + j, frac + j, state + j, step + j, bins + j);
+    for (int j = 0; j < groups; j += width) {
+        if (width == 8) glint_multinomial_exact_all_groups_x8_avx2(c, t.K, lanes + j, frac + j, state + j, step + j, bins + j);
+        else glint_multinomial_exact_all_groups_x4(c, t.K, lanes + j, frac + j, state + j, step + j, bins + j);
+    }
     glint_multinomial_group_bins empty;
     for (int k = 0; k < 8; ++k) empty.count[k] = 0;
     empty.frac_bin = 8;

@@ -255,9 +255,10 @@ TEST_CASE("ibl: C++'s level shares, drawn four lane groups at a time, equal the 
                             ++vertices_other;
                         if (K::glint_surely_no_success(g, n, std::min(lit_total, 1.0f), K::glint_open_unit_from_bits(root.x))) continue;
                         const auto c = K::glint_multinomial_draw(n, tree, px.v.hash[v], root, g.variant, g.pow_method, cache);
-                        for (int k = 0; k < 7; ++k) share[k + 1] += px.v.weight[v] * c.count[k] / px.N;
+                        for (int k = 0; k < 7; ++k) share[k + 1] += px.v.weight[v] * c.count[k];
                         draws += levels - 1;
                     }
+                    for (int k = 1; k < 8; ++k) share[k] /= px.N;
                     bool same = batched.draws == draws;
                     for (int k = 0; k < 8; ++k) same = same && batched.share[k] == share[k];
                     differ += !same;

@@ -90,8 +90,8 @@ GLINT_FN glint_ibl_shares glint_ibl_level_shares(GLINT_INOUT(glint_grid_pixel) p
     glint_binomial_cache root_cache = glint_binomial_empty_cache();
 #if !defined(GLINT_GLSL)
     // C++: the vertices whose draw is one bit-sliced pass (glint_multinomial_exact_all_applies) are
-    // drawn together (glint_multinomial_exact_all_many, four lane groups at a time) before the
-    // loop, which reads their counts in the same vertex order: the same counts and sums as
+    // drawn together (glint_multinomial_exact_all_many, four or eight lane groups at a time) before
+    // the loop, which reads their counts in the same vertex order: the same counts and sums as
     // glint_multinomial_draw vertex by vertex, as GLSL does it.
     bool in_batch[12];
     real batch_N[12];
@@ -104,6 +104,8 @@ GLINT_FN glint_ibl_shares glint_ibl_level_shares(GLINT_INOUT(glint_grid_pixel) p
     }
     glint_multinomial_exact_all_many(tree, px.v.count, batch_N, batch_words, in_batch, batched);
 #endif
+    real weighted[7];  // sum over the vertices of l_t M_k, divided by N once after the loop
+    for (int k = 0; k < 7; ++k) weighted[k] = real(0);
     for (int i = 0; i < px.v.count; ++i) {
         glint_multinomial_counts c;
 #if !defined(GLINT_GLSL)
@@ -118,9 +120,10 @@ GLINT_FN glint_ibl_shares glint_ibl_level_shares(GLINT_INOUT(glint_grid_pixel) p
             if (glint_surely_no_success(g, N * px.v.share[i], min(lit_total, real(1)), glint_open_unit_from_bits(root_words.x))) continue;
             c = glint_multinomial_draw(N * px.v.share[i], tree, px.v.hash[i], root_words, g.variant, g.pow_method, root_cache);
         }
-        for (int k = 0; k < 7; ++k) o.share[k + 1] += px.v.weight[i] * c.count[k] / N;
+        for (int k = 0; k < 7; ++k) weighted[k] += px.v.weight[i] * c.count[k];
         o.draws += K - 1;
     }
+    for (int k = 0; k < 7; ++k) o.share[k + 1] = weighted[k] / N;
     return o;
 }
 

@@ -321,7 +321,7 @@ TEST_CASE("C++'s four and eight lane groups at once give each group the bins of 
     // The eight-group pass compiled for the baseline target (two vectors of four), on any CPU...
     check_lane_group_pass<8>([](auto&&... a) { MF::glint_multinomial_exact_all_groups<8>(a...); });
     // ... and for AVX2, where glint_multinomial_exact_all_many runs it (the CPU has AVX2).
-    MESSAGE("eight-group pass with AVX2: " << std::string(MF::glint_multinomial_wide_groups() ? "run" : "not run (the CPU has no AVX2; never used here)"));
+    MESSAGE("eight-group pass with AVX2: " << std::string(MF::glint_multinomial_wide_groups() ? "run" : "not run: not used here (a CPU without AVX2, or a build without the AVX2 path)"));
     if (MF::glint_multinomial_wide_groups())
         check_lane_group_pass<8>([](auto&&... a) { MF::glint_multinomial_exact_all_groups_x8_avx2(a...); });
 }

@@ -218,7 +218,7 @@ share_scan scan_level_shares(int variant, int pow_method) {
 
 }  // namespace
 
-TEST_CASE("ibl: C++'s level shares, drawn four lane groups at a time, equal the vertex-by-vertex draws of the GLSL loop") {
+TEST_CASE("ibl: C++'s level shares, drawn four or eight lane groups at a time, equal the vertex-by-vertex draws of the GLSL loop") {
     // The reference is ibl.glsl's loop as GLSL runs it: per vertex the root's words, the skip
     // test, glint_multinomial_draw (one bit-sliced pass for N from 4 to 63, the tree elsewhere).
     long pixels = 0, differ = 0, vertices_in_pass = 0, vertices_two_groups = 0, vertices_other = 0;

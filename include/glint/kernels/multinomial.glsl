@@ -483,10 +483,11 @@ GLINT_FN_OUT_OF_LINE void glint_multinomial_exact_all_groups_x4(const glint_mult
 
 // Eight groups in AVX2's registers, where the CPU has them (glint_multinomial_wide_groups): eight
 // 32-bit multiplies in one instruction, which SSE2 does in about six for four. On this project's
-// 2-core AMD EPYC (CPU), glint_report's IBL glint frames, two rounds alternating with the
-// four-group pass: K = 4 (linear knob) 3984 and 4270 against 4314 and 5033 us, K = 8 5467 and 5675
-// against 6571 and 6752 us. Eight groups in SSE2's registers (two per vector) were slower than
-// two four-group passes (each digit waits for the slowest of eight groups): not kept.
+// 2-core AMD EPYC (CPU), glint_report --only ibl, two rounds alternating with the four-group pass:
+// the glint frame 7.52x and 7.54x the smooth one against 8.63x and 9.47x at K = 4, 9.79x and 8.75x
+// against 14.0x and 11.0x at K = 8 (linear knob; with the level shares' one division a pixel,
+// ibl.glsl). Eight groups in SSE2's registers (two per vector) were slower than two four-group
+// passes (each digit waits for the slowest of eight groups): the baseline keeps four.
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(GLINT_NO_AVX2)
 __attribute__((noinline, target("avx2"))) static void glint_multinomial_exact_all_groups_x8_avx2(const glint_multinomial_thresholds& c, int K,
                                                                                                 const uint lanes_in[8], const uint frac_in[8],
@@ -498,14 +499,20 @@ __attribute__((noinline, target("avx2"))) static void glint_multinomial_exact_al
 // Whether glint_multinomial_exact_all_many draws eight groups at once (the CPU has AVX2).
 static bool glint_multinomial_wide_groups() { return __builtin_cpu_supports("avx2"); }
 #else
-static void glint_multinomial_exact_all_groups_x8_avx2(const glint_multinomial_thresholds&, int, const uint[8], const uint[8], const uint[8],
-                                                       const uint[8], glint_multinomial_group_bins[8]) {}
+// Without the AVX2 path: the same eight-group pass for the baseline target (never called by
+// glint_multinomial_exact_all_many, which draws four at a time there).
+GLINT_FN_OUT_OF_LINE void glint_multinomial_exact_all_groups_x8_avx2(const glint_multinomial_thresholds& c, int K, const uint lanes_in[8],
+                                                                     const uint frac_in[8], const uint state_in[8], const uint step_in[8],
+                                                                     glint_multinomial_group_bins bins[8]) {
+    glint_multinomial_exact_all_groups<8>(c, K, lanes_in, frac_in, state_in, step_in, bins);
+}
+
 static bool glint_multinomial_wide_groups() { return false; }
 #endif
 
 // glint_multinomial_exact_all for the draws i < count with draw[i] set (each with N[i] from 4 to
 // 63 and root words words[i]; N total >= 1), all with tree t: their lane groups, one or two a
-// draw, four at a time. result[i] is set where draw[i] is, to glint_multinomial_exact_all's counts
+// draw, four or eight at a time. result[i] is set where draw[i] is, to glint_multinomial_exact_all's counts
 // (the same integer sums and the same float operations).
 GLINT_FN void glint_multinomial_exact_all_many(const glint_multinomial_tree& t, int count, const real N[12], const uvec3 words[12],
                                                const bool draw[12], glint_multinomial_counts result[12]) {

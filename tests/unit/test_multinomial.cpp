@@ -323,5 +323,5 @@ TEST_CASE("C++'s four and eight lane groups at once give each group the bins of 
     // ... and for AVX2, where glint_multinomial_exact_all_many runs it (the CPU has AVX2).
     MESSAGE("eight-group pass with AVX2: " << std::string(MF::glint_multinomial_wide_groups() ? "run" : "not run: not used here (a CPU without AVX2, or a build without the AVX2 path)"));
     if (MF::glint_multinomial_wide_groups())
-        check_lane_group_pass<8>([](auto&&... a) { MF::glint_multinomial_exact_all_groups_x8_avx2(a...); });
+        check_lane_group_pass<8>([](auto&&... a) { MF::glint_multinomial_exact_all_groups_x8(a...); });
 }

@@ -408,7 +408,7 @@ __attribute__((always_inline)) static inline void glint_multinomial_exact_all_gr
         state[v] = state_in[v];
         step[v] = step_in[v];
     }
-    const u32xw none = lanes ^ lanes;
+    const u32xw none = {};
     u32xw threshold[8];  // the first T of each are used
     u32xw open[8];
     u32xw below[8];
@@ -440,7 +440,7 @@ __attribute__((always_inline)) static inline void glint_multinomial_exact_all_gr
         }
     }
     u32xw previous = none;
-    const i32xw bin_of = reinterpret_cast<i32xw>(none);
+    const i32xw bin_of = {};
     i32xw frac_bin = bin_of + 8;
     for (int v = 0; v < W; ++v)
         for (int k = T; k < 8; ++k) bins[v].count[k] = 0;  // bins k >= K hold nothing
@@ -488,27 +488,27 @@ GLINT_FN_OUT_OF_LINE void glint_multinomial_exact_all_groups_x4(const glint_mult
 // against 14.0x and 11.0x at K = 8 (linear knob; with the level shares' one division a pixel,
 // ibl.glsl). Eight groups in SSE2's registers (two per vector) were slower than two four-group
 // passes (each digit waits for the slowest of eight groups): the baseline keeps four.
+// Without the AVX2 path (another compiler or target, or GLINT_NO_AVX2) it is the baseline's, which
+// glint_multinomial_exact_all_many does not call: it draws four groups at a time there.
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(GLINT_NO_AVX2)
-__attribute__((noinline, target("avx2"))) static void glint_multinomial_exact_all_groups_x8_avx2(const glint_multinomial_thresholds& c, int K,
-                                                                                                const uint lanes_in[8], const uint frac_in[8],
-                                                                                                const uint state_in[8], const uint step_in[8],
-                                                                                                glint_multinomial_group_bins bins[8]) {
-    glint_multinomial_exact_all_groups<8>(c, K, lanes_in, frac_in, state_in, step_in, bins);
-}
-
-// Whether glint_multinomial_exact_all_many draws eight groups at once (the CPU has AVX2).
-static bool glint_multinomial_wide_groups() { return __builtin_cpu_supports("avx2"); }
+__attribute__((noinline, target("avx2"))) static
 #else
-// Without the AVX2 path: the same eight-group pass for the baseline target (never called by
-// glint_multinomial_exact_all_many, which draws four at a time there).
-GLINT_FN_OUT_OF_LINE void glint_multinomial_exact_all_groups_x8_avx2(const glint_multinomial_thresholds& c, int K, const uint lanes_in[8],
-                                                                     const uint frac_in[8], const uint state_in[8], const uint step_in[8],
-                                                                     glint_multinomial_group_bins bins[8]) {
+__attribute__((noinline)) static
+#endif
+void glint_multinomial_exact_all_groups_x8(const glint_multinomial_thresholds& c, int K, const uint lanes_in[8], const uint frac_in[8],
+                                           const uint state_in[8], const uint step_in[8], glint_multinomial_group_bins bins[8]) {
     glint_multinomial_exact_all_groups<8>(c, K, lanes_in, frac_in, state_in, step_in, bins);
 }
 
-static bool glint_multinomial_wide_groups() { return false; }
+// Whether glint_multinomial_exact_all_many draws eight groups at once: the AVX2 path is built and
+// the CPU has AVX2.
+static bool glint_multinomial_wide_groups() {
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(GLINT_NO_AVX2)
+    return __builtin_cpu_supports("avx2");
+#else
+    return false;
 #endif
+}
 
 // glint_multinomial_exact_all for the draws i < count with draw[i] set (each with N[i] from 4 to
 // 63 and root words words[i]; N total >= 1), all with tree t: their lane groups, one or two a
@@ -535,7 +535,7 @@ GLINT_FN void glint_multinomial_exact_all_many(const glint_multinomial_tree& t, 
     for (int j = groups; j < ((groups + width - 1) / width) * width; ++j) lanes[j] = 0u, frac[j] = 0u, state[j] = 0u, step[j] = 1u;
     glint_multinomial_group_bins bins[24];
     for (int j = 0; j < groups; j += width) {
-        if (width == 8) glint_multinomial_exact_all_groups_x8_avx2(c, t.K, lanes + j, frac + j, state + j, step + j, bins + j);
+        if (width == 8) glint_multinomial_exact_all_groups_x8(c, t.K, lanes + j, frac + j, state + j, step + j, bins + j);
         else glint_multinomial_exact_all_groups_x4(c, t.K, lanes + j, frac + j, state + j, step + j, bins + j);
     }
     glint_multinomial_group_bins empty;

@@ -88,38 +88,35 @@ GLINT_FN glint_ibl_shares glint_ibl_level_shares(GLINT_INOUT(glint_grid_pixel) p
     // vertices of a lattice point share the root's N and p (glint_grid_sample).
     glint_multinomial_tree tree = glint_multinomial_make_tree(lit, K - 1);
     glint_binomial_cache root_cache = glint_binomial_empty_cache();
+    real weighted[8];  // sum over the vertices of l_t M_k, divided by N once after the loop
+    for (int k = 0; k < 8; ++k) weighted[k] = real(0);
 #if !defined(GLINT_GLSL)
     // C++: the vertices whose draw is one bit-sliced pass (glint_multinomial_exact_all_applies) are
-    // drawn together (glint_multinomial_exact_all_many, four or eight lane groups at a time) before
-    // the loop, which reads their counts in the same vertex order: the same counts and sums as
-    // glint_multinomial_draw vertex by vertex, as GLSL does it.
+    // drawn together (glint_multinomial_exact_all_weighted, four or eight lane groups at a time),
+    // which adds their l_t M_k to weighted before the loop: the same counts as
+    // glint_multinomial_draw vertex by vertex, as GLSL does it, summed in another order.
     bool in_batch[12];
     real batch_N[12];
     uvec3 batch_words[12];
-    glint_multinomial_counts batched[12];
     for (int i = 0; i < 12; ++i) {
         batch_N[i] = N * px.v.share[i];
         in_batch[i] = i < px.v.count && glint_multinomial_exact_all_applies(batch_N[i], tree.total, g.variant);
         batch_words[i] = in_batch[i] ? glint_multinomial_node_words(px.v.hash[i], 0) : uvec3(0u);
     }
-    glint_multinomial_exact_all_many(tree, px.v.count, batch_N, batch_words, in_batch, batched);
+    glint_multinomial_exact_all_weighted(tree, px.v.count, batch_N, batch_words, in_batch, px.v.weight, weighted);
 #endif
-    real weighted[7];  // sum over the vertices of l_t M_k, divided by N once after the loop
-    for (int k = 0; k < 7; ++k) weighted[k] = real(0);
     for (int i = 0; i < px.v.count; ++i) {
-        glint_multinomial_counts c;
 #if !defined(GLINT_GLSL)
         if (in_batch[i]) {
-            c = batched[i];  // N total >= 1 there: the skip test below never fires
-        } else
-#endif
-        {
-            // The multinomial's root draws the lit levels against the rest with these uniforms: if
-            // it surely draws none, every count is 0 (glint_surely_no_success).
-            uvec3 root_words = glint_multinomial_node_words(px.v.hash[i], 0);
-            if (glint_surely_no_success(g, N * px.v.share[i], min(lit_total, real(1)), glint_open_unit_from_bits(root_words.x))) continue;
-            c = glint_multinomial_draw(N * px.v.share[i], tree, px.v.hash[i], root_words, g.variant, g.pow_method, root_cache);
+            o.draws += K - 1;  // N total >= 1 there: the skip test below never fires
+            continue;
         }
+#endif
+        // The multinomial's root draws the lit levels against the rest with these uniforms: if
+        // it surely draws none, every count is 0 (glint_surely_no_success).
+        uvec3 root_words = glint_multinomial_node_words(px.v.hash[i], 0);
+        if (glint_surely_no_success(g, N * px.v.share[i], min(lit_total, real(1)), glint_open_unit_from_bits(root_words.x))) continue;
+        glint_multinomial_counts c = glint_multinomial_draw(N * px.v.share[i], tree, px.v.hash[i], root_words, g.variant, g.pow_method, root_cache);
         for (int k = 0; k < 7; ++k) weighted[k] += px.v.weight[i] * c.count[k];
         o.draws += K - 1;
     }

@@ -37,7 +37,7 @@
 // ibl K 1 under callgrind), glint_report's IBL glint frames (linear knob) from 10.7 and 12.5 ms to
 // 9.1 and 9.7 ms at K = 8, and examples/gl/glint_gl's IBL frames on llvmpipe (192 x 120) from 246
 // to 234 ms (K = 4) and from 437 to 391 ms (K = 8), two alternating runs each. Up to 63, with C++
-// drawing four lane groups at once (glint_multinomial_exact_all_many, which the IBL grid uses):
+// drawing four lane groups at once (then glint_multinomial_exact_all_many; now _weighted, below):
 // 49.5M to 43.1M at K = 4, 84.6M to 61.8M at K = 8; glint_report's IBL glint frames (linear
 // knob, two rounds alternating with the code before) 5715 and 6032 us to 4878 and 4688 at K = 4,
 // 9424 and 9295 to 6608 and 5882 at K = 8; llvmpipe's (GLSL, one lane group at a time, four
@@ -369,17 +369,22 @@ GLINT_FN void glint_multinomial_exact_all(real N, glint_multinomial_tree t, uvec
 // once (the IBL's grid vertices of a pixel share their probabilities), their words side by side,
 // so that the hashes, comparisons and bit counts run in vector registers (GCC's and Clang's vector
 // extension): W = 4 in SSE2's, the baseline of x86-64, and where the CPU has AVX2, W = 8 in its
-// (GCC on x86-64; chosen at run time, glint_multinomial_wide_groups). Per group and bin: the number
-// of its trials in the bin other than the fractional one (lane mask `frac`, 0 where the group has
-// none), and the bin that trial fell in (8: the rest). Each group's bins are those of
-// glint_multinomial_exact_all_group: the steps that the other groups still need leave a group whose
-// lanes are all decided unchanged (tests/unit/test_multinomial.cpp compares them), so the counts
-// are the same at either width. GPUs run one fragment a thread: GLSL keeps the single group.
-struct glint_multinomial_group_bins {
-    int count[8];
-    int frac_bin;
-};
-
+// (GCC on x86-64; chosen at run time, glint_multinomial_wide_groups). Each group's bins are those
+// of glint_multinomial_exact_all_group: the steps that the other groups still need leave a group
+// whose lanes are all decided unchanged. GPUs run one fragment a thread: GLSL keeps the single
+// group.
+//
+// What the IBL needs of the counts is their sum weighted by the vertices' triangle weights l_t
+// (ibl.glsl), so the pass returns that: for each bin k < T it adds to weighted[k] the sum over the
+// groups v of weight[v] times the number of the group's trials in bin k other than the fractional
+// one (lane mask frac[v], 0 where the group has none), plus frac_weight[v] where that trial fell
+// in bin k. With one group of weight 1 and the others 0, weighted[k] is that group's count
+// (tests/unit/test_multinomial.cpp compares each group so with its one-group pass). It replaced
+// per-group bins that the caller turned into per-vertex counts and then weighted: the IBL
+// estimates of glint_frame_loop ibl 4 1 count 26.3M instructions instead of 30.8M, ibl 8 1 34.9M
+// instead of 42.0M (callgrind, GCC 12; the sums the same to float rounding), and the K = 4 and
+// K = 8 frames took about 10% less time (DEVELOPERS.md).
+//
 // The pass for thresholds c_0 .. c_(T-1), T = K from 2 to 8 a compile-time constant, so that the
 // compiler unrolls the loop over them and keeps their words in registers where they fit. (One
 // loop for T rounded up to 4 or 8 at run time, as before, spilled the words to the stack: a digit
@@ -390,23 +395,34 @@ struct glint_multinomial_group_bins {
 template <int T, int W>
 __attribute__((always_inline)) static inline void glint_multinomial_exact_all_groups_pass(const glint_multinomial_thresholds& c, const uint lanes_in[],
                                                                                           const uint frac_in[], const uint state_in[],
-                                                                                          const uint step_in[], glint_multinomial_group_bins bins[]) {
+                                                                                          const uint step_in[], const real weight_in[],
+                                                                                          const real frac_weight_in[], real weighted[8]) {
     typedef uint u32x4 __attribute__((vector_size(16)));
     typedef uint u32x8 __attribute__((vector_size(32)));
     typedef int i32x4 __attribute__((vector_size(16)));
     typedef int i32x8 __attribute__((vector_size(32)));
     typedef unsigned long long u64x2 __attribute__((vector_size(16)));
     typedef unsigned long long u64x4 __attribute__((vector_size(32)));
+    typedef float f32x4 __attribute__((vector_size(16)));  // real's vectors (GCC ignores vector_size on a dependent type)
+    typedef float f32x8 __attribute__((vector_size(32)));
+    typedef double f64x4 __attribute__((vector_size(32)));
+    typedef double f64x8 __attribute__((vector_size(64)));
+    typedef typename std::conditional<std::is_same<real, float>::value, f32x4, f64x4>::type realx4;
+    typedef typename std::conditional<std::is_same<real, float>::value, f32x8, f64x8>::type realx8;
     static_assert(W == 4 || W == 8, "four or eight lane groups");
     typedef typename std::conditional<W == 8, u32x8, u32x4>::type u32xw;
     typedef typename std::conditional<W == 8, i32x8, i32x4>::type i32xw;
     typedef typename std::conditional<W == 8, u64x4, u64x2>::type u64xw;
+    typedef typename std::conditional<W == 8, realx8, realx4>::type realxw;
     u32xw lanes, frac, state, step;
+    realxw weight, frac_weight;
     for (int v = 0; v < W; ++v) {
         lanes[v] = lanes_in[v];
         frac[v] = frac_in[v];
         state[v] = state_in[v];
         step[v] = step_in[v];
+        weight[v] = weight_in[v];
+        frac_weight[v] = frac_weight_in[v];
     }
     const u32xw none = {};
     u32xw threshold[8];  // the first T of each are used
@@ -440,10 +456,6 @@ __attribute__((always_inline)) static inline void glint_multinomial_exact_all_gr
         }
     }
     u32xw previous = none;
-    const i32xw bin_of = {};
-    i32xw frac_bin = bin_of + 8;
-    for (int v = 0; v < W; ++v)
-        for (int k = T; k < 8; ++k) bins[v].count[k] = 0;  // bins k >= K hold nothing
     for (int k = 0; k < T; ++k) {
         u32xw in_bin = below[k] & ~previous;
         previous = below[k];
@@ -452,33 +464,36 @@ __attribute__((always_inline)) static inline void glint_multinomial_exact_all_gr
         x = (x & 0x33333333u) + ((x >> 2u) & 0x33333333u);
         x = (x + (x >> 4u)) & 0x0f0f0f0fu;
         x = (x * 0x01010101u) >> 24u;
-        frac_bin = ((in_bin & frac) != 0u) ? (bin_of + k) : frac_bin;
-        for (int v = 0; v < W; ++v) bins[v].count[k] = int(x[v]);
+        // The counts (at most 32) and the fractional trial's 0 or 1 convert exactly.
+        i32xw frac_in_bin = -((in_bin & frac) != 0u);
+        realxw sum = __builtin_convertvector(reinterpret_cast<i32xw>(x), realxw) * weight + __builtin_convertvector(frac_in_bin, realxw) * frac_weight;
+        real total = real(0);
+        for (int v = 0; v < W; ++v) total += sum[v];
+        weighted[k] += total;
     }
-    for (int v = 0; v < W; ++v) bins[v].frac_bin = frac_bin[v];
 }
 
 // The pass of W groups for K bins (K clamped to 2..8).
 template <int W>
 __attribute__((always_inline)) static inline void glint_multinomial_exact_all_groups(const glint_multinomial_thresholds& c, int K, const uint lanes_in[],
                                                                                      const uint frac_in[], const uint state_in[], const uint step_in[],
-                                                                                     glint_multinomial_group_bins bins[]) {
+                                                                                     const real weight_in[], const real frac_weight_in[], real weighted[8]) {
     switch (clamp(K, 2, 8)) {
-        case 2: glint_multinomial_exact_all_groups_pass<2, W>(c, lanes_in, frac_in, state_in, step_in, bins); break;
-        case 3: glint_multinomial_exact_all_groups_pass<3, W>(c, lanes_in, frac_in, state_in, step_in, bins); break;
-        case 4: glint_multinomial_exact_all_groups_pass<4, W>(c, lanes_in, frac_in, state_in, step_in, bins); break;
-        case 5: glint_multinomial_exact_all_groups_pass<5, W>(c, lanes_in, frac_in, state_in, step_in, bins); break;
-        case 6: glint_multinomial_exact_all_groups_pass<6, W>(c, lanes_in, frac_in, state_in, step_in, bins); break;
-        case 7: glint_multinomial_exact_all_groups_pass<7, W>(c, lanes_in, frac_in, state_in, step_in, bins); break;
-        default: glint_multinomial_exact_all_groups_pass<8, W>(c, lanes_in, frac_in, state_in, step_in, bins); break;
+        case 2: glint_multinomial_exact_all_groups_pass<2, W>(c, lanes_in, frac_in, state_in, step_in, weight_in, frac_weight_in, weighted); break;
+        case 3: glint_multinomial_exact_all_groups_pass<3, W>(c, lanes_in, frac_in, state_in, step_in, weight_in, frac_weight_in, weighted); break;
+        case 4: glint_multinomial_exact_all_groups_pass<4, W>(c, lanes_in, frac_in, state_in, step_in, weight_in, frac_weight_in, weighted); break;
+        case 5: glint_multinomial_exact_all_groups_pass<5, W>(c, lanes_in, frac_in, state_in, step_in, weight_in, frac_weight_in, weighted); break;
+        case 6: glint_multinomial_exact_all_groups_pass<6, W>(c, lanes_in, frac_in, state_in, step_in, weight_in, frac_weight_in, weighted); break;
+        case 7: glint_multinomial_exact_all_groups_pass<7, W>(c, lanes_in, frac_in, state_in, step_in, weight_in, frac_weight_in, weighted); break;
+        default: glint_multinomial_exact_all_groups_pass<8, W>(c, lanes_in, frac_in, state_in, step_in, weight_in, frac_weight_in, weighted); break;
     }
 }
 
 // Four groups, for the baseline target.
 GLINT_FN_OUT_OF_LINE void glint_multinomial_exact_all_groups_x4(const glint_multinomial_thresholds& c, int K, const uint lanes_in[4],
                                                                 const uint frac_in[4], const uint state_in[4], const uint step_in[4],
-                                                                glint_multinomial_group_bins bins[4]) {
-    glint_multinomial_exact_all_groups<4>(c, K, lanes_in, frac_in, state_in, step_in, bins);
+                                                                const real weight_in[4], const real frac_weight_in[4], real weighted[8]) {
+    glint_multinomial_exact_all_groups<4>(c, K, lanes_in, frac_in, state_in, step_in, weight_in, frac_weight_in, weighted);
 }
 
 // Eight groups in AVX2's registers, where the CPU has them (glint_multinomial_wide_groups): eight
@@ -489,19 +504,20 @@ GLINT_FN_OUT_OF_LINE void glint_multinomial_exact_all_groups_x4(const glint_mult
 // ibl.glsl). Eight groups in SSE2's registers (two per vector) were slower than two four-group
 // passes (each digit waits for the slowest of eight groups): the baseline keeps four.
 // Without the AVX2 path (another compiler or target, or GLINT_NO_AVX2) it is the baseline's, which
-// glint_multinomial_exact_all_many does not call: it draws four groups at a time there.
+// glint_multinomial_exact_all_weighted does not call: it draws four groups at a time there.
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(GLINT_NO_AVX2)
 __attribute__((noinline, target("avx2"))) static
 #else
 __attribute__((noinline)) static
 #endif
 void glint_multinomial_exact_all_groups_x8(const glint_multinomial_thresholds& c, int K, const uint lanes_in[8], const uint frac_in[8],
-                                           const uint state_in[8], const uint step_in[8], glint_multinomial_group_bins bins[8]) {
-    glint_multinomial_exact_all_groups<8>(c, K, lanes_in, frac_in, state_in, step_in, bins);
+                                           const uint state_in[8], const uint step_in[8], const real weight_in[8], const real frac_weight_in[8],
+                                           real weighted[8]) {
+    glint_multinomial_exact_all_groups<8>(c, K, lanes_in, frac_in, state_in, step_in, weight_in, frac_weight_in, weighted);
 }
 
-// Whether glint_multinomial_exact_all_many draws eight groups at once: the AVX2 path is built and
-// the CPU has AVX2.
+// Whether glint_multinomial_exact_all_weighted draws eight groups at once: the AVX2 path is built
+// and the CPU has AVX2.
 static bool glint_multinomial_wide_groups() {
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(GLINT_NO_AVX2)
     return __builtin_cpu_supports("avx2");
@@ -511,50 +527,38 @@ static bool glint_multinomial_wide_groups() {
 }
 
 // glint_multinomial_exact_all for the draws i < count with draw[i] set (each with N[i] from 4 to
-// 63 and root words words[i]; N total >= 1), all with tree t: their lane groups, one or two a
-// draw, four or eight at a time. result[i] is set where draw[i] is, to glint_multinomial_exact_all's counts
-// (the same integer sums and the same float operations).
-GLINT_FN void glint_multinomial_exact_all_many(const glint_multinomial_tree& t, int count, const real N[12], const uvec3 words[12],
-                                               const bool draw[12], glint_multinomial_counts result[12]) {
+// 63 and root words words[i]; N total >= 1), all with tree t, their lane groups (one or two a
+// draw) four or eight at a time: adds to weighted[k], k < t.K, the sum over those draws of
+// weight[i] times their count in bin k (glint_multinomial_exact_all's counts, summed in another
+// order).
+GLINT_FN void glint_multinomial_exact_all_weighted(const glint_multinomial_tree& t, int count, const real N[12], const uvec3 words[12],
+                                                   const bool draw[12], const real weight[12], real weighted[8]) {
     glint_multinomial_thresholds c = glint_multinomial_exact_all_thresholds(t);
     uint lanes[24], frac[24], state[24], step[24];
+    real group_weight[24], frac_weight[24];
     int groups = 0;
     for (int i = 0; i < count; ++i) {
         if (!draw[i]) continue;
         uvec2 group_lanes = glint_multinomial_exact_all_lanes(N[i]);
         uvec2 frac_lanes = glint_multinomial_exact_all_frac_lanes(group_lanes);
+        real frac_share = weight[i] * (N[i] - real(int(min(N[i], GLINT_MULTINOMIAL_EXACT_ALL_MAX))));
+        bool two = group_lanes.y != 0u;  // floor(N) >= 32: the fractional lane is group b's
         lanes[groups] = group_lanes.x, frac[groups] = frac_lanes.x;
         state[groups] = words[i].x, step[groups] = words[i].y | 1u;
+        group_weight[groups] = weight[i], frac_weight[groups] = two ? real(0) : frac_share;
         ++groups;
-        if (group_lanes.y == 0u) continue;
+        if (!two) continue;
         lanes[groups] = group_lanes.y, frac[groups] = frac_lanes.y;
         state[groups] = words[i].z, step[groups] = words[i].y | 1u;
+        group_weight[groups] = weight[i], frac_weight[groups] = frac_share;
         ++groups;
     }
     const int width = glint_multinomial_wide_groups() ? 8 : 4;
-    for (int j = groups; j < ((groups + width - 1) / width) * width; ++j) lanes[j] = 0u, frac[j] = 0u, state[j] = 0u, step[j] = 1u;
-    glint_multinomial_group_bins bins[24];
+    for (int j = groups; j < ((groups + width - 1) / width) * width; ++j)
+        lanes[j] = 0u, frac[j] = 0u, state[j] = 0u, step[j] = 1u, group_weight[j] = real(0), frac_weight[j] = real(0);
     for (int j = 0; j < groups; j += width) {
-        if (width == 8) glint_multinomial_exact_all_groups_x8(c, t.K, lanes + j, frac + j, state + j, step + j, bins + j);
-        else glint_multinomial_exact_all_groups_x4(c, t.K, lanes + j, frac + j, state + j, step + j, bins + j);
-    }
-    glint_multinomial_group_bins empty;
-    for (int k = 0; k < 8; ++k) empty.count[k] = 0;
-    empty.frac_bin = 8;
-    int group = 0;
-    for (int i = 0; i < count; ++i) {
-        if (!draw[i]) continue;
-        const glint_multinomial_group_bins& a = bins[group++];
-        const glint_multinomial_group_bins& b = (N[i] >= real(32)) ? bins[group++] : empty;  // group b: floor(N) >= 32
-        real frac_weight = N[i] - real(int(min(N[i], GLINT_MULTINOMIAL_EXACT_ALL_MAX)));
-        real kept = real(0);  // bins k >= t.K hold nothing: adding their zeros changes no sum
-        for (int k = 0; k < 8; ++k) result[i].count[k] = real(0);
-        for (int k = 0; k < t.K; ++k) {
-            real count_k = real(a.count[k] + b.count[k]) + ((a.frac_bin == k || b.frac_bin == k) ? frac_weight : real(0));
-            result[i].count[k] = count_k;
-            kept += count_k;
-        }
-        result[i].rest = N[i] - kept;
+        if (width == 8) glint_multinomial_exact_all_groups_x8(c, t.K, lanes + j, frac + j, state + j, step + j, group_weight + j, frac_weight + j, weighted);
+        else glint_multinomial_exact_all_groups_x4(c, t.K, lanes + j, frac + j, state + j, step + j, group_weight + j, frac_weight + j, weighted);
     }
 }
 #endif

@@ -45,7 +45,7 @@ inline vec3 shade_ibl(const glint::environment& env, const ibl_settings& s, cons
         radiance = look.radiance;
         const auto g = ibl_grid(s);
         auto px = glint::grid_pixel_setup(ht.uv, duvdx, duvdy, g, lattice_u);  // lattice_u < 0: every lattice point
-        const auto e = glint::ibl_sample(px, g, env.levels(), look.indicators, env.visible_area(cos_o, sa), env.total_area(s.roughness));
+        const auto e = glint::ibl_sample(px, g, env.levels(), look.indicators, env.visible_area(cos_o, sa), ggx_total_area(s.roughness));
         m = glint::modulation(e);
     }
     const float albedo = env.albedo(cos_o, sa);

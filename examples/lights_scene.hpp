@@ -156,6 +156,17 @@ inline glint::grid_params<float> lights_grid(const scene_options& opt) {
     return g;
 }
 
+// D_H of GGX at alpha = roughness (glint::total_area), which only the glints need. It depends on
+// the roughness alone, a material constant in these scenes, so it is computed once per roughness
+// and thread, as glint::total_area advises ("once per material") and bench/report_ibl.cpp's frames
+// always did; a renderer with a roughness texture would pay it per pixel (until 2026-12-05 these
+// scenes did: about 8% of the point-light glint frame, perf).
+inline float ggx_total_area(float roughness) {
+    thread_local float cached_roughness = -1.0f, cached = 1.0f;
+    if (roughness != cached_roughness) cached = glint::total_area(glint::ndf::ggx, vec2(roughness)), cached_roughness = roughness;
+    return cached;
+}
+
 struct shading_counters {
     std::uint64_t draws = 0;
 };
@@ -219,9 +230,7 @@ inline vec3 shade(const scene_options& opt, const light_setup& ls, const hit& h,
         specular = g2 * radiance * glm::dot(hv, wi_c) * d_omega / wo.z;
     if (!(specular > 0)) return result;
     if (!opt.smooth) {
-        // D_H, which only the glints need: per pixel, as with a roughness texture (a material of
-        // one roughness could set it up once), so that the smooth frame does not pay for it.
-        const float dh = glint::total_area(glint::ndf::ggx, alpha);
+        const float dh = ggx_total_area(opt.roughness);
         glint::grid_params<float> g = lights_grid(opt);
         g.seed += h.sphere ? 1u : 2u;
         const auto light = ls.type == light_type::point ? glint::grid_point_light(glint::ndf::ggx, alpha, dh, hv)

@@ -390,6 +390,7 @@ void set_lights(GLuint p, const scene_options& opt, const light_setup& ls) {
     set(p, "u_uv_per_unit", uv_per_unit);
     set_grid(p, lights_grid(opt));  // the shader adds 1 (sphere) or 2 (plane) to the seed, as shade() does
     set(p, "u_roughness", opt.roughness);
+    set(p, "u_total_area", ggx_total_area(opt.roughness));
 }
 
 // Indexed [ibl]: the lights scene's at 0, the IBL scene's at 1; [glints]: the smooth BRDF's
@@ -687,6 +688,7 @@ int main(int argc, char** argv) {
                         ibl_settings is;
                         is.smooth = s.smooth;
                         set(p, "u_roughness", is.roughness);
+                        set(p, "u_total_area", ggx_total_area(is.roughness));
                         set_grid(p, ibl_grid(is));
                     } else {
                         scene_options so;

@@ -7,6 +7,7 @@ uniform vec3 u_eye, u_forward, u_right, u_up;
 uniform vec2 u_size;          // viewport width and height in pixels
 uniform float u_ray_scale;    // 2 tan(fov_y / 2) / height
 uniform float u_roughness;    // GGX alpha
+uniform float u_total_area;   // D_H of GGX at u_roughness (glint::total_area), set with it: a material constant
 uniform glint_grid_params u_grid;  // the seed here is the scene's; the lights scene adds 1 (sphere) or 2 (plane)
 uniform vec3 u_silver_eta, u_silver_k;
 

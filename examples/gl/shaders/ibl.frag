@@ -13,8 +13,7 @@ vec3 glint_gl_shade_ibl(vec3 position, vec3 n, vec2 uv, vec2 duvdx, vec2 duvdy) 
     glint_gl_lookup(reflect(d, n), sa, radiance, ind);
     float m = 1.0;
     if (GLINT_GL_GLINTS != 0) {
-        vec2 alpha = vec2(u_roughness);
-        float dh = glint_total_area(0, alpha);  // GGX
+        float dh = u_total_area;
         glint_grid_pixel px = glint_grid_pixel_setup_stochastic(uv, duvdx, duvdy, u_grid, glint_gl_lattice_u(u_grid.seed));
         m = glint_modulation(glint_ibl_sample_pixel(px, u_grid, u_levels, ind, glint_gl_table(1, sqrt(max(cos_o, 0.0)), sa), dh));
     }

@@ -63,7 +63,7 @@ vec3 shade(bool sphere, vec3 p, vec3 n, vec3 t, vec3 b, vec2 uv, vec3 wo_world, 
                                   : g2 * radiance * dot(hv, wi_c) * d_omega / wo.z;
     if (!(specular > 0.0)) return result;
     if (GLINT_GL_GLINTS != 0) {
-        float dh = glint_total_area(u_ggx, alpha);  // only the glints need D_H (lights_scene.hpp)
+        float dh = u_total_area;  // only the glints need D_H (lights_scene.hpp ggx_total_area)
         glint_grid_params g = u_grid;
         g.seed = u_grid.seed + (sphere ? 1u : 2u);
         glint_grid_light light;

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <string>
 #include <unordered_set>
 #include <vector>
 
@@ -44,6 +45,46 @@ TEST_CASE("pcg3d matches an independent word-by-word implementation on 1e6 input
         REQUIRE(k.y == y);
         REQUIRE(k.z == z);
     }
+}
+
+// C++'s batched PCG3D (glint_pcg3d_many: a pixel's grid vertices four or eight at a time in
+// vector registers) against the reference, every count from 0 to 12, words past the count left
+// as they were.
+template <class Many>
+void check_pcg3d_many(Many many) {
+    long words = 0, differ = 0;
+    std::uint32_t state = 99u;
+    for (int round = 0; round < 20000; ++round) {
+        const int count = round % 13;
+        glm::uvec3 w[12];
+        std::uint32_t ref[12][3];
+        for (int i = 0; i < 12; ++i) {
+            for (int c = 0; c < 3; ++c) {
+                state = state * 747796405u + 2891336453u;
+                ref[i][c] = (round % 3 == 0) ? (state >> 24) : state;  // small counters and scrambled words
+            }
+            w[i] = glm::uvec3(ref[i][0], ref[i][1], ref[i][2]);
+            if (i < count) pcg3d_reference(ref[i][0], ref[i][1], ref[i][2]);
+        }
+        many(w, count);
+        for (int i = 0; i < 12; ++i) {
+            differ += w[i].x != ref[i][0] || w[i].y != ref[i][1] || w[i].z != ref[i][2];
+            ++words;
+        }
+    }
+    MESSAGE(words << " words, " << differ << " differ from the reference");
+    CHECK(words == 20000 * 12);
+    CHECK(differ == 0);
+}
+
+TEST_CASE("C++'s batched pcg3d (four or eight words at once) equals the reference word by word") {
+    using K = glint::detail::glsl::kernels<float>;
+    check_pcg3d_many([](glm::uvec3* w, int n) { K::glint_pcg3d_many_x4(w, n); });
+    // The eight-word function compiled for the baseline target here or for AVX2 (GCC on x86-64);
+    // run on any x86-64 CPU only where it has AVX2, as glint_pcg3d_many runs it.
+    MESSAGE("eight words at once with AVX2: " << std::string(K::glint_cpu_avx2() ? "run" : "not run (a CPU without AVX2, or a build without the AVX2 path)"));
+    if (K::glint_cpu_avx2()) check_pcg3d_many([](glm::uvec3* w, int n) { K::glint_pcg3d_many_x8(w, n); });
+    check_pcg3d_many([](glm::uvec3* w, int n) { K::glint_pcg3d_many(w, n); });
 }
 
 TEST_CASE("pcg3d is injective on a 2^16-point lattice of counters") {

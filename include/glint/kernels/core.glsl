@@ -23,6 +23,69 @@ GLINT_FN uvec3 glint_pcg3d(uvec3 v) {
     return v;
 }
 
+#if !defined(GLINT_GLSL)
+// C++ only: whether the AVX2 paths are built (GCC on x86-64, not -DGLINT_NO_AVX2) and the CPU
+// has AVX2 (docs/conventions.md).
+static bool glint_cpu_avx2() {
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(GLINT_NO_AVX2)
+    return __builtin_cpu_supports("avx2");
+#else
+    return false;
+#endif
+}
+
+// C++ only: glint_pcg3d of words[0 .. count - 1] (count <= 12) in place, W at once in vector
+// registers (GCC's and Clang's vector extension): the same words, bit for bit (unsigned
+// arithmetic wraps alike; tests/unit/test_core.cpp compares them). A pixel's grid vertices hash
+// twelve words (grid.glsl), the IBL's multinomial roots twelve more (ibl.glsl); one at a time,
+// their 32-bit multiplies lie in one chain per word.
+template <int W>
+__attribute__((always_inline)) static inline void glint_pcg3d_lanes(uvec3 words[12], int count) {
+    typedef uint u32x4 __attribute__((vector_size(16)));
+    typedef uint u32x8 __attribute__((vector_size(32)));
+    typedef typename std::conditional<W == 8, u32x8, u32x4>::type u32xw;
+    for (int base = 0; base < count; base += W) {
+        u32xw x = {}, y = {}, z = {};
+        for (int v = 0; v < W; ++v)
+            if (base + v < count) x[v] = words[base + v].x, y[v] = words[base + v].y, z[v] = words[base + v].z;
+        x = x * 1664525u + 1013904223u;
+        y = y * 1664525u + 1013904223u;
+        z = z * 1664525u + 1013904223u;
+        x += y * z;
+        y += z * x;
+        z += x * y;
+        x ^= x >> 16u;
+        y ^= y >> 16u;
+        z ^= z >> 16u;
+        x += y * z;
+        y += z * x;
+        z += x * y;
+        for (int v = 0; v < W; ++v)
+            if (base + v < count) words[base + v] = uvec3(x[v], y[v], z[v]);
+    }
+}
+
+// Four at a time, for the baseline target (SSE2 emulates a four-wide 32-bit multiply in about six
+// instructions).
+GLINT_FN_OUT_OF_LINE void glint_pcg3d_many_x4(uvec3 words[12], int count) { glint_pcg3d_lanes<4>(words, count); }
+
+// Eight at a time in AVX2 registers, where the CPU has them (glint_cpu_avx2); the baseline's four
+// otherwise.
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(GLINT_NO_AVX2)
+__attribute__((noinline, target("avx2"))) static
+#else
+__attribute__((noinline)) static
+#endif
+void glint_pcg3d_many_x8(uvec3 words[12], int count) {
+    glint_pcg3d_lanes<8>(words, count);
+}
+
+GLINT_FN void glint_pcg3d_many(uvec3 words[12], int count) {
+    if (glint_cpu_avx2()) glint_pcg3d_many_x8(words, count);
+    else glint_pcg3d_many_x4(words, count);
+}
+#endif
+
 // A 32-bit finaliser: Wellons' "lowbias32" (https://nullprogram.com/blog/2018/07/31/, the
 // constants found by his hash-prospector search; its avalanche bias, his measure, 0.17 against
 // 0.26 for MurmurHash3's finaliser). Two multiplies against PCG3D's twelve, for one word where

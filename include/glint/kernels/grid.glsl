@@ -297,16 +297,24 @@ GLINT_FN glint_grid_vertices glint_footprint_vertices(vec2 uv, glint_footprint f
         for (int t = 0; t < 3; ++t) {
             real wt = tri.weight[t];
             if (!(wt > real(0))) continue;
-            uvec3 hv = glint_pcg3d(uvec3(uint(tri.vertex[t].x), uint(tri.vertex[t].y), lattice_key));
-            real share = wl;
-            if (g.density_sigma > real(0))
-                share *= exp(g.density_sigma * glint_normal_quantile(glint_open_unit_from_bits(hv.z)) - real(0.5) * g.density_sigma * g.density_sigma);
             v.weight[v.count] = wt;
-            v.share[v.count] = share;
-            v.hash[v.count] = hv;
+            v.share[v.count] = wl;
+            v.hash[v.count] = uvec3(uint(tri.vertex[t].x), uint(tri.vertex[t].y), lattice_key);  // hashed below
             ++v.count;
         }
     }
+    // Each vertex's hash: PCG3D of its cell and lattice key. C++ hashes the pixel's vertices
+    // together, four or eight in vector registers (glint_pcg3d_many, the same words).
+#if defined(GLINT_GLSL)
+    for (int i = 0; i < 12; ++i)
+        if (i < v.count) v.hash[i] = glint_pcg3d(v.hash[i]);
+#else
+    glint_pcg3d_many(v.hash, v.count);
+#endif
+    if (g.density_sigma > real(0))
+        for (int i = 0; i < 12; ++i)
+            if (i < v.count)
+                v.share[i] *= exp(g.density_sigma * glint_normal_quantile(glint_open_unit_from_bits(v.hash[i].z)) - real(0.5) * g.density_sigma * g.density_sigma);
     return v;
 }
 

@@ -518,13 +518,7 @@ void glint_multinomial_exact_all_groups_x8(const glint_multinomial_thresholds& c
 
 // Whether glint_multinomial_exact_all_weighted draws eight groups at once: the AVX2 path is built
 // and the CPU has AVX2.
-static bool glint_multinomial_wide_groups() {
-#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(GLINT_NO_AVX2)
-    return __builtin_cpu_supports("avx2");
-#else
-    return false;
-#endif
-}
+static bool glint_multinomial_wide_groups() { return glint_cpu_avx2(); }
 
 // glint_multinomial_exact_all for the draws i < count with draw[i] set (each with N[i] from 4 to
 // 63 and root words words[i]; N total >= 1), all with tree t, their lane groups (one or two a

@@ -3,7 +3,9 @@
 //   glint_frame_loop point FRAMES          the showcase's 160 x 100 point-light frame, glints on
 //   glint_frame_loop point-smooth FRAMES   the same frame shaded smooth
 //   glint_frame_loop point-stochastic FRAMES  the glint frame on one lattice point per pixel
-//   glint_frame_loop ibl K FRAMES          glint::ibl_sample on bench/report_ibl.cpp's sphere
+//   glint_frame_loop ibl K FRAMES          glint::ibl_sample on bench/report_ibl.cpp's sphere; prints
+//                                          the frames' mean wall time too (without the
+//                                          environment's build), for A/B timing of two builds
 //   glint_frame_loop ibl-stochastic K FRAMES  the same on one lattice point per pixel
 //                                          (sunset.exr); count it alone with
 //                                          --toggle-collect='glint_ibl_estimate*'
@@ -14,6 +16,8 @@
 //                                          footprint per light, 3 as 1 on one lattice point,
 //                                          REPS times
 // Each prints a sum of its results, so that two builds can be checked to compute the same.
+#include <algorithm>
+#include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -60,7 +64,9 @@ int main(int argc, char** argv) {
         o.levels = std::atoi(argv[2]);
         const auto env = glint::build_environment(img.width, img.height, img.rgb, o);
         const float sa = 0.35f, dh = env.total_area(sa * sa);
-        for (int frame = 0; frame < std::atoi(argv[3]); ++frame)
+        const auto start = std::chrono::steady_clock::now();
+        const int frames = std::atoi(argv[3]);
+        for (int frame = 0; frame < frames; ++frame)
             for (int y = 0; y < 100; ++y)
                 for (int x = 0; x < 160; ++x) {
                     const float px = (static_cast<float>(x) - 80) / 50, py = (50 - static_cast<float>(y)) / 50, rr = px * px + py * py;
@@ -75,6 +81,8 @@ int main(int argc, char** argv) {
                     const auto e = glint_ibl_estimate(uv, g, env, s, env.visible_area(n.z, sa), dh, lattice_u);
                     sum += static_cast<double>(glint::modulation(e));
                 }
+        const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        std::printf("%s: %.0f us a frame (mean of %d)\n", mode, 1e6 * seconds / std::max(frames, 1), frames);
     } else if (argc == 4 && !std::strcmp(mode, "draw")) {
         const float N = std::strtof(argv[2], nullptr), p = std::strtof(argv[3], nullptr);
         for (std::uint32_t i = 0; i < 200000; ++i) {

@@ -79,9 +79,10 @@ void check_pcg3d_many(Many many) {
 
 TEST_CASE("C++'s batched pcg3d (four or eight words at once) equals the reference word by word") {
     using K = glint::detail::glsl::kernels<float>;
-    check_pcg3d_many([](glm::uvec3* w, int n) { K::glint_pcg3d_many_x4(w, n); });
-    // The eight-word function compiled for the baseline target here or for AVX2 (GCC on x86-64);
-    // run on any x86-64 CPU only where it has AVX2, as glint_pcg3d_many runs it.
+    // Eight words at once compiled for the baseline target (two vectors of four), on any CPU...
+    check_pcg3d_many([](glm::uvec3* w, int n) { K::glint_pcg3d_lanes<8>(w, n); });
+    // ... and for AVX2 (GCC on x86-64), run where the CPU has it, as glint_pcg3d_many runs it;
+    // elsewhere glint_pcg3d_many hashes one word at a time.
     MESSAGE("eight words at once with AVX2: " << std::string(K::glint_cpu_avx2() ? "run" : "not run (a CPU without AVX2, or a build without the AVX2 path)"));
     if (K::glint_cpu_avx2()) check_pcg3d_many([](glm::uvec3* w, int n) { K::glint_pcg3d_many_x8(w, n); });
     check_pcg3d_many([](glm::uvec3* w, int n) { K::glint_pcg3d_many(w, n); });

@@ -36,7 +36,7 @@ static bool glint_cpu_avx2() {
 
 // C++ only: glint_pcg3d of words[0 .. count - 1] (count <= 12) in place, W at once in vector
 // registers (GCC's and Clang's vector extension): the same words, bit for bit (unsigned
-// arithmetic wraps alike; tests/unit/test_core.cpp compares them). A pixel's grid vertices hash
+// arithmetic wraps alike; tests/unit/test_hash.cpp compares them). A pixel's grid vertices hash
 // twelve words (grid.glsl), the IBL's multinomial roots twelve more (ibl.glsl); one at a time,
 // their 32-bit multiplies lie in one chain per word.
 template <int W>
@@ -65,12 +65,11 @@ __attribute__((always_inline)) static inline void glint_pcg3d_lanes(uvec3 words[
     }
 }
 
-// Four at a time, for the baseline target (SSE2 emulates a four-wide 32-bit multiply in about six
-// instructions).
-GLINT_FN_OUT_OF_LINE void glint_pcg3d_many_x4(uvec3 words[12], int count) { glint_pcg3d_lanes<4>(words, count); }
-
-// Eight at a time in AVX2 registers, where the CPU has them (glint_cpu_avx2); the baseline's four
-// otherwise.
+// Eight at a time in AVX2 registers, where the CPU has them (glint_cpu_avx2); one at a time
+// otherwise: SSE2, the baseline, emulates a four-wide 32-bit multiply in about six instructions,
+// and four at a time there cost more than it saved (-DGLINT_NO_AVX2: glint_frame_loop ibl 4 1's
+// estimates 33.4M to 35.1M instructions; a K = 4 IBL frame 3965 against 4202 us, least of four
+// alternating runs, this 2-core AMD EPYC, CPU).
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(GLINT_NO_AVX2)
 __attribute__((noinline, target("avx2"))) static
 #else
@@ -81,8 +80,12 @@ void glint_pcg3d_many_x8(uvec3 words[12], int count) {
 }
 
 GLINT_FN void glint_pcg3d_many(uvec3 words[12], int count) {
-    if (glint_cpu_avx2()) glint_pcg3d_many_x8(words, count);
-    else glint_pcg3d_many_x4(words, count);
+    if (glint_cpu_avx2()) {
+        glint_pcg3d_many_x8(words, count);
+        return;
+    }
+    for (int i = 0; i < 12; ++i)
+        if (i < count) words[i] = glint_pcg3d(words[i]);
 }
 #endif
 

@@ -304,7 +304,8 @@ GLINT_FN glint_grid_vertices glint_footprint_vertices(vec2 uv, glint_footprint f
         }
     }
     // Each vertex's hash: PCG3D of its cell and lattice key. C++ hashes the pixel's vertices
-    // together, four or eight in vector registers (glint_pcg3d_many, the same words).
+    // together, eight at a time in AVX2 registers where the CPU has them (glint_pcg3d_many, the
+    // same words).
 #if defined(GLINT_GLSL)
     for (int i = 0; i < 12; ++i)
         if (i < v.count) v.hash[i] = glint_pcg3d(v.hash[i]);

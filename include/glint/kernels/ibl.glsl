@@ -103,7 +103,7 @@ GLINT_FN glint_ibl_shares glint_ibl_level_shares(GLINT_INOUT(glint_grid_pixel) p
         in_batch[i] = i < px.v.count && glint_multinomial_exact_all_applies(batch_N[i], tree.total, g.variant);
         batch_words[i] = px.v.hash[i];
     }
-    glint_pcg3d_many(batch_words, px.v.count);  // glint_multinomial_node_words(hash, 0) of every vertex, together
+    glint_pcg3d_many(batch_words, px.v.count);  // glint_multinomial_node_words(hash, 0) = PCG3D(hash), every vertex together
     glint_multinomial_exact_all_weighted(tree, px.v.count, batch_N, batch_words, in_batch, px.v.weight, weighted);
 #endif
     for (int i = 0; i < px.v.count; ++i) {

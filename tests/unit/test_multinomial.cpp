@@ -324,7 +324,7 @@ TEST_CASE("C++'s four and eight lane groups at once give each group the counts o
     // The eight-group pass compiled for the baseline target (two vectors of four), on any CPU...
     check_lane_group_pass<8>([](auto&&... a) { MF::glint_multinomial_exact_all_groups<8>(a...); });
     // ... and for AVX2, where glint_multinomial_exact_all_weighted runs it (the CPU has AVX2).
-    MESSAGE("eight-group pass with AVX2: " << std::string(MF::glint_multinomial_wide_groups() ? "run" : "not run: not used here (a CPU without AVX2, or a build without the AVX2 path)"));
-    if (MF::glint_multinomial_wide_groups())
+    MESSAGE("eight-group pass with AVX2: " << std::string(MF::glint_cpu_avx2() ? "run" : "not run: not used here (a CPU without AVX2, or a build without the AVX2 path)"));
+    if (MF::glint_cpu_avx2())
         check_lane_group_pass<8>([](auto&&... a) { MF::glint_multinomial_exact_all_groups_x8(a...); });
 }

@@ -115,7 +115,11 @@ GLINT_FN glint_ibl_shares glint_ibl_level_shares(GLINT_INOUT(glint_grid_pixel) p
 #endif
         // The multinomial's root draws the lit levels against the rest with these uniforms: if
         // it surely draws none, every count is 0 (glint_surely_no_success).
+#if defined(GLINT_GLSL)
         uvec3 root_words = glint_multinomial_node_words(px.v.hash[i], 0);
+#else
+        uvec3 root_words = batch_words[i];  // hashed with the batch
+#endif
         if (glint_surely_no_success(g, N * px.v.share[i], min(lit_total, real(1)), glint_open_unit_from_bits(root_words.x))) continue;
         glint_multinomial_counts c = glint_multinomial_draw(N * px.v.share[i], tree, px.v.hash[i], root_words, g.variant, g.pow_method, root_cache);
         for (int k = 0; k < 7; ++k) weighted[k] += px.v.weight[i] * c.count[k];

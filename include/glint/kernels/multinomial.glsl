@@ -369,7 +369,7 @@ GLINT_FN void glint_multinomial_exact_all(real N, glint_multinomial_tree t, uvec
 // once (the IBL's grid vertices of a pixel share their probabilities), their words side by side,
 // so that the hashes, comparisons and bit counts run in vector registers (GCC's and Clang's vector
 // extension): W = 4 in SSE2's, the baseline of x86-64, and where the CPU has AVX2, W = 8 in its
-// (GCC on x86-64; chosen at run time, glint_multinomial_wide_groups). Each group's bins are those
+// (GCC on x86-64; chosen at run time, glint_cpu_avx2). Each group's bins are those
 // of glint_multinomial_exact_all_group: the steps that the other groups still need leave a group
 // whose lanes are all decided unchanged. GPUs run one fragment a thread: GLSL keeps the single
 // group.
@@ -496,7 +496,7 @@ GLINT_FN_OUT_OF_LINE void glint_multinomial_exact_all_groups_x4(const glint_mult
     glint_multinomial_exact_all_groups<4>(c, K, lanes_in, frac_in, state_in, step_in, weight_in, frac_weight_in, weighted);
 }
 
-// Eight groups in AVX2's registers, where the CPU has them (glint_multinomial_wide_groups): eight
+// Eight groups in AVX2's registers, where the CPU has them (glint_cpu_avx2): eight
 // 32-bit multiplies in one instruction, which SSE2 does in about six for four. On this project's
 // 2-core AMD EPYC (CPU), glint_report --only ibl, two rounds alternating with the four-group pass:
 // the glint frame 7.52x and 7.54x the smooth one against 8.63x and 9.47x at K = 4, 9.79x and 8.75x
@@ -516,9 +516,6 @@ void glint_multinomial_exact_all_groups_x8(const glint_multinomial_thresholds& c
     glint_multinomial_exact_all_groups<8>(c, K, lanes_in, frac_in, state_in, step_in, weight_in, frac_weight_in, weighted);
 }
 
-// Whether glint_multinomial_exact_all_weighted draws eight groups at once: the AVX2 path is built
-// and the CPU has AVX2.
-static bool glint_multinomial_wide_groups() { return glint_cpu_avx2(); }
 
 // glint_multinomial_exact_all for the draws i < count with draw[i] set (each with N[i] from 4 to
 // 63 and root words words[i]; N total >= 1), all with tree t, their lane groups (one or two a
@@ -547,7 +544,7 @@ GLINT_FN void glint_multinomial_exact_all_weighted(const glint_multinomial_tree&
         group_weight[groups] = weight[i], frac_weight[groups] = frac_share;
         ++groups;
     }
-    const int width = glint_multinomial_wide_groups() ? 8 : 4;
+    const int width = glint_cpu_avx2() ? 8 : 4;
     for (int j = groups; j < ((groups + width - 1) / width) * width; ++j)
         lanes[j] = 0u, frac[j] = 0u, state[j] = 0u, step[j] = 1u, group_weight[j] = real(0), frac_weight[j] = real(0);
     for (int j = 0; j < groups; j += width) {

@@ -6,7 +6,7 @@
 // the CPU: the same shading replayed in C++ from the frame's G-buffer (the same inputs), and the
 // CPU ray tracer of examples/lights.cpp and examples/ibl.cpp (its own geometry and footprints).
 //
-//   glint_gl [--size WxH] [--frames N] [--warmup N] [--scenes LIST] [--deferred] [--const-table]
+//   glint_gl [--size WxH] [--frames N] [--warmup N] [--scenes LIST] [--deferred]
 //            [--one-lattice-point] [--compare] [--no-images] [--env PATH.exr] [--out DIR]
 //            [--egl surfaceless|device|default] [--pragma TEXT]...
 //
@@ -17,9 +17,7 @@
 // so that a run stopped by a timeout shows where it was. --deferred draws each frame as a deferred
 // renderer does: the raster pass writes the G-buffer (position, normal, uv and its dFdx / dFdy),
 // then a compute shader (deferred.comp) shades every pixel with the same shading functions; the
-// two passes are timed apart. The binomial sampler's table comes from a shader storage buffer
-// (GLINT_BINOMIAL_TABLE_BINDING, glint::glsl_binomial_table()); --const-table compiles it as
-// binomial.glsl's constant array instead, for comparison. --one-lattice-point shades the glints on
+// two passes are timed apart. --one-lattice-point shades the glints on
 // one of the footprint's four lattice points per pixel (glint_grid_pixel_setup_stochastic, its
 // uniform a hash of the pixel as lights_scene.hpp's lattice_uniform; the CPU images do the same).
 // --egl picks the EGL platform to try
@@ -64,7 +62,7 @@ namespace {
     std::fprintf(stderr,
                  "glint_gl: %s\n"
                  "usage: glint_gl [--size WxH] [--frames N] [--warmup N] [--scenes point,sun,area,ibl4,ibl8] [--deferred]\n"
-                 "                [--const-table] [--one-lattice-point] [--compare] [--no-images] [--env PATH.exr] [--out DIR]\n"
+                 "                [--one-lattice-point] [--compare] [--no-images] [--env PATH.exr] [--out DIR]\n"
                  "                [--egl surfaceless|device|default] [--pragma TEXT]...\n",
                  problem.c_str());
     std::exit(2);
@@ -76,7 +74,6 @@ struct settings {
     std::vector<std::string> scenes{"point", "sun", "area", "ibl4", "ibl8"};
     bool compare = false, images = true;
     bool deferred = false;  // a G-buffer raster pass, then a compute shading pass
-    bool const_table = false;  // the binomial sampler's table as binomial.glsl's constant array, not a buffer
     bool one_lattice_point = false;  // glints on one lattice point per pixel
     std::string env = std::string(GLINT_DATA_DIR) + "/envmaps/sunset.exr";
     std::string out;
@@ -97,7 +94,6 @@ settings parse(int argc, char** argv) {
         else if (a == "--warmup") s.warmup = static_cast<int>(parse_float(a, value(), 1, 100000, usage));  // llvmpipe's first timer query is garbage
         else if (a == "--compare") s.compare = true;
         else if (a == "--deferred") s.deferred = true;
-        else if (a == "--const-table") s.const_table = true;
         else if (a == "--one-lattice-point") s.one_lattice_point = true;
         else if (a == "--no-images") s.images = false;
         else if (a == "--env") s.env = value();
@@ -150,10 +146,6 @@ GLuint compile(GLenum type, const std::string& source, const std::string& what) 
 
 // The binomial sampler the shaders are compiled for: the showcase's (lights_scene.hpp).
 constexpr glint::binomial_variant shader_variant = glint::binomial_variant::unbiased;
-// The shader storage binding of the sampler's table (glint::glsl_binomial_table()); the IBL's
-// environment takes 0 and 1 (common.glsl).
-constexpr GLuint table_binding = 2;
-
 // What a scene program does: shade (the forward pass), shade and write the G-buffer (--compare's
 // forward frames), write the G-buffer only (the deferred raster pass), or shade the G-buffer (the
 // deferred compute pass).
@@ -161,7 +153,7 @@ enum class pass { shade, shade_and_gbuffer, gbuffer, deferred_shading };
 
 constexpr const char* version_line = "#version 450\n";
 
-// A shader's source: the preamble's lines (pragmas, the table's binding), the #defines, the glint
+// A shader's source: the preamble's lines (pragmas), the #defines, the glint
 // kernel files (in glint::glsl_kernel_names() order), common.glsl, then the given files.
 std::string shader_text(bool ibl, bool glints, pass what, const std::vector<std::string>& preamble, const std::vector<std::string>& files) {
     std::string text = version_line;
@@ -621,17 +613,9 @@ int main(int argc, char** argv) {
                 genv[K] = upload(*envs[K]);
             }
         }
-        // The shaders' preamble: the pragmas, and where the binomial sampler's table is read from.
+        // The shaders' preamble: the pragmas.
         std::vector<std::string> preamble;
         for (const auto& text : opt.pragmas) preamble.push_back("#pragma " + text);
-        GLuint table_buffer = 0;
-        if (!opt.const_table) {
-            const std::vector<float> table = glint::glsl_binomial_table();
-            glCreateBuffers(1, &table_buffer);
-            glNamedBufferData(table_buffer, static_cast<GLsizeiptr>(table.size() * sizeof(float)), table.data(), GL_STATIC_DRAW);
-            glBindBufferBase(GL_SHADER_STORAGE_BUFFER, table_binding, table_buffer);
-            preamble.push_back("#define GLINT_BINOMIAL_TABLE_BINDING " + std::to_string(table_binding));
-        }
         preamble.push_back(std::string("#define GLINT_GL_ONE_LATTICE_POINT ") + (opt.one_lattice_point ? "1" : "0"));
         const programs progs = make_programs(lights, need[4] || need[8], opt.deferred, opt.compare, preamble);
         std::printf("glint_gl: [%.1f s] drawing\n", seconds_since(start));
@@ -801,9 +785,8 @@ int main(int argc, char** argv) {
                                   "plane), the median over the frames; wall ms adds the query's wait and glFinish. ")
                << "Every scene is drawn with glints and with the smooth BRDF of the same scene, each by its own programs (the smooth ones "
                   "compiled without the glint code; the IBL's smooth frame reads the radiance only).\n\n"
-               << "The binomial sampler's table: " << (opt.const_table ? "binomial.glsl's constant array (--const-table)" : "a shader storage buffer")
-               << (opt.one_lattice_point ? ". Glints on one lattice point per pixel (--one-lattice-point)" : "")
-               << ".\n\nDevice: " << device << " (OpenGL " << glint_gl::gl_context::version() << "), " << opt.width << "x" << opt.height << ", median of "
+               << (opt.one_lattice_point ? "Glints on one lattice point per pixel (--one-lattice-point).\n\n" : "")
+               << "Device: " << device << " (OpenGL " << glint_gl::gl_context::version() << "), " << opt.width << "x" << opt.height << ", median of "
                << opt.frames << " frames after " << opt.warmup << " warm-up.\n\n"
                << timings.str();
         const auto ratio = [&](const char* a, bool a_smooth, const char* b, bool b_smooth) {

@@ -47,19 +47,15 @@
 //    mean's relative error), which spares the erfc and one exp. The atom the clamp puts at the
 //    bound plays the role of P(n = 1 | M).
 // 3. The far bound. Capping the offset at N - 2 lowers its mean by sigma psi(t - (N - 2)/sigma),
-//    which matters for N below about 30. There the sampler uses the two-sided fit: (t', sigma')
-//    such that min(sigma' max(t' + Z, 0), N - 2) has mean m and variance v. It is solved once,
-//    offline, by Newton's method on the capped moments' closed form, and stored on a 41 x 41 grid
-//    over (N, p) (bench/fit_binomial_far_bound.cpp), read by cubic interpolation: no iteration at
-//    run time (glint_binomial_two_sided_fit). The table leaves E[n] within 2.9e-5 of N p
-//    (relative) between its nodes; the offset's mean within 1.1e-4 and its variance within
-//    2.2e-4 of their targets.
-// 4. Without the ends. The parameters depend on (N, p) alone, so where they are tabulated or in
-//    closed form the sampler does not need P(n = 0) and P(n = N) for them, only for the gates,
+//    which matters for N below about 30. There (N < 32) the sampler does not draw the Gaussian
+//    at all: it inverts the law exactly (Small N, below). From N = 32 on the cap removes less than
+//    1e-8 of the middle's mean. (Until the walk took N < 32, a 41 x 41 table of the two-sided fit,
+//    solved offline by Newton's method, served N = 4 to 32: 45 to 52 ns a draw at N from 16 to 28
+//    and p near 1/2, 3x KK25 Alg. 1, and a 13 KB constant array in every shader.)
+// 4. Without the ends. The parameters depend on (N, p) alone, so where they are in closed form the sampler does not need P(n = 0) and P(n = N) for them, only for the gates,
 //    and skips those too where u1 is surely between them (glint_binomial_middle_fit):
-//    - lambda = N p_near >= 3 where the far bound N - 2 is 5 sd or more above lambda - 1 (from
-//      N = 29 on always; below, from N = 11.45 on, for example N = 20 at p_near from 0.15 to
-//      0.40): the one-sided fit in closed form (glint_binomial_closed_fit). The far end weighs
+//    - N >= 32 and lambda = N p_near >= 3 (there the far bound N - 2 is always 5 sd or more
+//      above lambda - 1): the one-sided fit in closed form (glint_binomial_closed_fit). The far end weighs
 //      less than 2.2e-7 there and is dropped; the near end's weight eps = (1 - p_near)^N comes
 //      from log(1 - p_near) (its series below p_near = 0.1) and an exp where
 //      lambda (1 + p_near / 2 + p_near^2 / 3) < 9, to first order from 9 to 17 (eps < 1.2e-4:
@@ -69,36 +65,40 @@
 //      w = sqrt(v) / m by two degree-6 polynomials in two pieces (t = m / sd, sigma = sd where
 //      6 sd <= m). The middle offset's mean within 7.9e-7 and its variance within 6.0e-6 of
 //      their targets (2.8e-6 and 3.8e-5 where eps is taken to first order);
-//    - elsewhere from N = 4 to 32: the far bound's table, scaled by sqrt(N p_near);
 //    - N >= 32 and lambda from 2^-7 to 3 (the band): the one-sided fit of step 2 as a function
 //      of (log2 lambda, 32 / N), polynomials in four pieces (glint_binomial_band_fit; made and
 //      measured by bench/fit_binomial_band.cpp: the offset's mean within 2.7e-6 and its variance
 //      within 1.8e-5 of their targets). They replaced the ends, m, v and the fit's log and exp,
 //      which cost these draws 2.1x (at N p = 1) to 2.3x (at N p = 10) their time now. (A table there
 //      was as fast on the CPU, but its constant array made the GLSL frames 2x slower on llvmpipe.)
-//    Elsewhere (N below 4, or N >= 32 with lambda below 2^-7, where the middle is drawn with
-//    probability about lambda) the moments are computed from the ends as in steps 1 and 2.
+//    Elsewhere (N >= 32 with lambda below 2^-7, where the middle is drawn with probability about
+//    lambda; and below N = 32 for callers that set the middle up there, glint_binomial_unbiased_setup,
+//    though the sampler walks) the moments are computed from the ends as in steps 1 and 2.
 // The overall mean is then N p^N + P(M) (1 + m) = N p up to those errors and the rounding of the
 // closed forms (about one ulp of N p). Measured figures: docs/binomial.md.
 //
-// Small N: exact by inversion. For 2 < N < 12 binomial_unbiased does not use steps 1 to 4: it
+// Small N: exact by inversion. For 2 < N < 32 binomial_unbiased does not use steps 1 to 4: it
 // draws from L(N, p) = (1 - f) b(Na, p) N / Na + f b(Na + 1, p) N / (Na + 1), Na = floor(N),
-// f = N - Na (the two neighbouring binomials scaled onto [0, N], mixed by the fractional part),
-// by inverting its CDF with u1 alone: a walk over the support from the near end, without a
-// transcendental (kernels/binomial.glsl, glint_binomial_walk). At integer N that is b(N, p)
-// itself; for real N the mean is N p, P(n = 0) is the randomised-rounding binomial's, the values
-// stay in [0, N], and the variance is N^2 p (1 - p) ((1 - f) / Na + f / (Na + 1)), 0% to 4.2%
-// above N p (1 - p). The draw stays monotone in p, symmetric per sample and continuous in N, and
-// n = 0 wherever the near-end gate says so. From N = 12 to 16 the walk and steps 1 to 4 are
-// mixed with weights (16 - N) / 4 and (N - 12) / 4, chosen by u2 (the middle then reads u2
-// stretched back onto (0, 1)): a walk at p = 1/2 takes about N / 2 steps, the Gaussian middle a
-// constant time. At N = 3 to 10 the walk took the draws from 2.0x-2.6x KK25 Alg. 1's time to
-// 0.4x-1.4x (docs/binomial.md).
+// f = N - Na (the two neighbouring binomials scaled onto [0, N], mixed by the fractional part):
+// u2 picks the component (Na + 1 trials where u2 < f), and u1 inverts its CDF, a walk over the
+// support from the near end without a transcendental, two support points a step
+// (kernels/binomial.glsl, glint_binomial_walk). At integer N that is b(N, p) itself; for real N
+// the mean is N p, P(n = 0) is the randomised-rounding binomial's, the values stay in [0, N], and
+// the variance is N^2 p (1 - p) ((1 - f) / Na + f / (Na + 1)), 0% to 4.2% above N p (1 - p). The
+// draw stays monotone in p, symmetric per sample and continuous in N; n > 0 only where u1 <
+// 1 - (1 - p)^(Na + 1) <= (N + 1) p, the bound that the near-end gate's shortcut and the grid's
+// skip test take (glint_binomial_trials_bound). From N = 32 to 40 the walk and steps 1 to 4 are
+// mixed with weights (40 - N) / 8 and (N - 32) / 8, chosen by u2 (each then reads u2 stretched
+// back onto (0, 1)): a walk at p = 1/2 takes about N / 2 support points, the Gaussian middle a
+// constant time. About N p_near + 1 points a draw: 8.8 ns at N = 30, p = 0.1 and 23.6 ns at
+// p = 1/2 against KK25 Alg. 1's 19.0 and 17.0 (the Gaussian middle took 46 and 28.8 there, and 45
+// to 52 ns at N from 16 to 28 near p = 1/2; a timing loop of the report's kind, CPU; the report's
+// figures are in docs/binomial.md).
 //
 // Cost. binomial_dual_gated and binomial_unbiased evaluate a transcendental only where it can
 // change the result, and return bit for bit what the straight-line evaluation returns (for u1 a
 // normal number; tests/unit/test_binomial_shortcuts.cpp): for N > 2 and methods kk25 and log1p,
-// u1 beyond N min(p, 1 - p) 1.001 + 1e-5 decides the near-end gate (n = 0, or n = N for
+// u1 beyond T min(p, 1 - p) 1.001 + 1e-5 (T = N + 1, glint_binomial_trials_bound) decides the near-end gate (n = 0, or n = N for
 // p > 1/2) from Bernoulli's inequality; the middle needs no gate where u1 is surely between p^N
 // and 1 - (1 - p)^N (bounded by 1 / (1 + x) with x = N q for Alg. 1, by 1 / (1 + x + x^2 / 2 +
 // x^3 / 6) for the mean-preserving sampler); the mean-preserving sampler's end probabilities are
@@ -111,17 +111,17 @@
 // middle there, it draws the Gaussian at once (glint_binomial_unbiased_busy): Alg. 1's cost for
 // most draws of large footprints. Elsewhere, where the middle is sure and its parameters need no
 // ends, the C++ kernel draws it without building the gates and the setup's structs
-// (glint_binomial_unbiased_sure_middle; GLSL keeps the one path, which inlines the table read
+// (glint_binomial_unbiased_sure_middle; GLSL keeps the one path, which inlines the middle's fit
 // once), and where u2 lies below a lower bound on the share that the clamp takes to the near count
 // (a polynomial in N p_near, glint_binomial_clamped_mass_bound) it returns that count without the
 // middle's fit or the quantile: at N p_near = 0.1, 0.910 of the middle's draws (of 0.916 that
 // clamp). The cached kernel (glint_binomial_unbiased_cached, the grid's) keeps its cache instead.
 // Sparse glints (N p << 1), the common case, then cost two comparisons. Where the middle is
-// drawn, its setup (step 4) costs a table read (N < 32: a log2, two sqrt and 16 node pairs, and
-// an exp), a log2, two sqrt and 21 to 24 polynomial terms per output in the band, or a sqrt and
-// two polynomials from N p = 3 on (and a log from p_near = 1/10 on and an exp where N p_near (1 + p_near / 2 + p_near^2 / 3) < 9); elsewhere the ends (a log1p and an exp), the moments, and the
-// one-sided fit (a log, two polynomials, an exp). The table read is
-// out of line in C++: inlined, it slowed the sampler's other paths. Measured against Alg. 1 and
+// drawn, its setup (step 4) costs a log2, two sqrt and 21 to 24 polynomial terms per output in
+// the band, or a sqrt and two polynomials from N p = 3 on (and a log from p_near = 1/10 on and an
+// exp where N p_near (1 + p_near / 2 + p_near^2 / 3) < 9); elsewhere the ends (a log1p and an
+// exp), the moments, and the one-sided fit (a log, two polynomials, an exp). The fit
+// (glint_binomial_middle_fit) is out of line in C++: inlined, it slowed the sampler's other paths. Measured against Alg. 1 and
 // std::binomial_distribution: docs/binomial.md.
 #pragma once
 

@@ -37,13 +37,4 @@ inline std::string_view glsl_source(std::string_view name) {
     throw error("glint::glsl_source: no kernel file named '" + std::string(name) + "'");
 }
 
-// The binomial sampler's table (binomial.glsl's GLINT_BINOMIAL_FAR_TABLE, 3364 floats, the same
-// digits as the constant array) for a shader that reads it from a buffer: with
-// GLINT_BINOMIAL_TABLE_BINDING (or GLINT_BINOMIAL_TABLE_DECLARED) defined, upload these floats in
-// order to the shader storage buffer bound there (std430 `vec4[]`: 841 vec4s).
-inline std::vector<float> glsl_binomial_table() {
-    const auto& t = detail::glsl::kernels<float>::GLINT_BINOMIAL_FAR_TABLE;
-    return std::vector<float>(std::begin(t), std::end(t));
-}
-
 }  // namespace glint

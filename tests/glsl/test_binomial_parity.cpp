@@ -132,32 +132,6 @@ TEST_CASE("binomial kernels: GLINT_BINOMIAL_VARIANT and _POW_METHOD fix the samp
     }
 }
 
-TEST_CASE("binomial kernels: the far-bound table read from a buffer (GLINT_BINOMIAL_TABLE_DECLARED) draws as C++") {
-    // glint::glsl_binomial_table() in a shader storage buffer instead of binomial.glsl's constant
-    // array (glint_gl's default), at the grid's points with N from 3 to 40, where the middle reads
-    // the table (N from 4 to 32), 64 uniform pairs each: the same flip-rate bound as the constant
-    // array's test above. The table shifted by one node (two floats) must be caught.
-    const draw_inputs d = grid_inputs(64, 0x7cu, 3, 40);
-    REQUIRE(d.Ns.size() >= 1000u);
-    const std::string body =
-        read_inputs + " glint_binomial r = glint_binomial_variant(4, N, p, u1, u2, 2);"
-        " out0[2u*i] = floatBitsToUint(r.positive); out0[2u*i+1u] = floatBitsToUint(r.negative);";
-    const std::vector<float> table = glint::glsl_binomial_table();
-    REQUIRE(table.size() == 3364u);
-    for (bool shifted : {false, true}) {
-        std::vector<float> data = table;
-        if (shifted) std::rotate(data.begin(), data.begin() + 2, data.end());
-        const auto gpu = glint_test::from_words<float>(glint_test::map_words_with_data(
-            {"core.glsl"}, "binomial.glsl", "GLINT_BINOMIAL_FAR_TABLE", "GLINT_BINOMIAL_TABLE_DECLARED", body, d.words, glint_test::to_words(data), d.Ns.size(), 2));
-        const parity s = tally_unbiased(gpu, d, true);
-        const double rate = s.rate();
-        MESSAGE(std::string(shifted ? "table shifted by one node" : "table from glsl_binomial_table()") << ": " << s.count << " counts, " << s.identical
-                                                                                                        << " identical, " << s.flips << " flipped (rate " << rate << ")");
-        if (shifted) CHECK(rate > 10 * BINOMIAL_GLSL_MAX_FLIP_RATE);  // 70 of 9728 counts when written
-        else CHECK(rate <= BINOMIAL_GLSL_MAX_FLIP_RATE);
-    }
-}
-
 TEST_CASE("multinomial kernel: GLSL against C++, K = 4 and 8") {
     for (int K : {4, 8}) {
         const std::size_t n = 65536;

@@ -44,13 +44,13 @@ glint::binomial_result<real> dual_gated_reference(real N, real p, real u1, real 
     return pair(g.positive_fixed + g.gaussian * G, g.negative_fixed + g.gaussian * (N2 - G));
 }
 
-// The mean-preserving sampler with its ends always evaluated (and for 2 < N < 16, where it draws
+// The mean-preserving sampler with its ends always evaluated (and for 2 < N < 40, where it draws
 // by the walk, the walk without the near-end gate).
 template <class real>
 glint::binomial_result<real> unbiased_reference(real N, real p, real u1, real u2, int method) {
     N = std::min(std::max(N, real(0)), K<real>::GLINT_BINOMIAL_MAX_N);
     p = std::min(std::max(p, real(0)), real(1));
-    if (K<real>::glint_binomial_walks(N, u2)) return K<real>::glint_binomial_walk(N, p, u1);
+    if (K<real>::glint_binomial_walks(N, u2)) return K<real>::glint_binomial_walk(N, p, u1, u2);
     const real N2 = std::max(real(2), N);
     const auto e = K<real>::glint_binomial_unbiased_ends_evaluated(N2, p, method);
     const auto g = K<real>::glint_binomial_dual_gates(N, p, u1, e.all_positive, e.all_negative);

@@ -321,20 +321,26 @@ GLINT_FN glint_grid_vertices glint_footprint_vertices(vec2 uv, glint_footprint f
 
 // True where a draw of the mean-preserving sampler (with its log1p evaluation of (1 - p)^N) from
 // first uniform u1 has no positive outcome for certain, so the draw can be skipped with the same
-// result: its gates give n >= 1 with probability P(n >= 1) <= max(N, 2) p, computed to within
-// 5e-6 absolute (docs/pow_one_minus.csv), and n >= 1 exactly when u1 falls below it. Sparse glints
+// result: its gates give n >= 1 with probability P(n >= 1) <= T p, T = glint_binomial_trials_bound(N)
+// (N + 1, which covers its walk's b(ceil N, p); 2 up to N = 2), computed
+// to within 5e-6 absolute (docs/pow_one_minus.csv), and n >= 1 exactly when u1 falls below it. Sparse glints
 // skip most draws this way.
 GLINT_FN bool glint_skip_test_applies(glint_grid_params g) {
     return g.variant == GLINT_BINOMIAL_UNBIASED && g.pow_method == GLINT_POW_LOG1P;
 }
 
-// The bound itself, for loops that hoist glint_skip_test_applies and max(N, 2).
-GLINT_FN bool glint_surely_no_success_at(real max_N_2, real p, real u1) {
-    return u1 >= max_N_2 * p * real(1.0001) + real(1e-5);
+// The bound itself, for loops that hoist glint_skip_test_applies and T.
+GLINT_FN bool glint_surely_no_success_at(real trials, real p, real u1) {
+    return u1 >= trials * p * real(1.0001) + real(1e-5);
+}
+
+// The same with the vertex's scale as glint_grid_pixel holds it (skip_scale: T 1.0001).
+GLINT_FN bool glint_surely_no_success_scaled(real scale, real p, real u1) {
+    return u1 >= scale * p + real(1e-5);
 }
 
 GLINT_FN bool glint_surely_no_success(glint_grid_params g, real N, real p, real u1) {
-    return glint_skip_test_applies(g) && glint_surely_no_success_at(max(N, real(2)), p, u1);
+    return glint_skip_test_applies(g) && glint_surely_no_success_at(glint_binomial_trials_bound(N), p, u1);
 }
 
 // N = density x footprint area, finite in float.
@@ -359,7 +365,7 @@ struct glint_grid_pixel {
     real lattice_u;  // < 0: every lattice point; in [0, 1): the one it picks (glint_grid_pixel_setup_stochastic)
     bool ready;  // whether v holds the vertices
     glint_grid_vertices v;
-    real skip_scale[12];  // max(N share, 2) 1.0001 per vertex: the skip test's bound over p, less 1e-5
+    real skip_scale[12];  // T 1.0001 per vertex, T = glint_binomial_trials_bound(N share): the skip test's bound over p, less 1e-5
     uint word[12];        // v.hash[i].x, contiguous for glint_skip_test_masks (read in place: 1743
                           // instead of 1720 instructions per extra light, glint_frame_loop lights)
 };
@@ -396,7 +402,7 @@ GLINT_FN glint_grid_pixel glint_grid_pixel_setup_stochastic(vec2 uv, vec2 duvdx,
 // The skip test's per-vertex bound and word for the first `vertices` vertices.
 GLINT_FN void glint_grid_skip_inputs(GLINT_INOUT(glint_grid_pixel) px, int vertices) {
     for (int i = 0; i < vertices; ++i) {
-        px.skip_scale[i] = max(px.N * px.v.share[i], real(2)) * real(1.0001);
+        px.skip_scale[i] = glint_binomial_trials_bound(px.N * px.v.share[i]) * real(1.0001);
         px.word[i] = px.v.hash[i].x;
     }
 }
@@ -411,7 +417,7 @@ GLINT_FN void glint_grid_pixel_vertices(GLINT_INOUT(glint_grid_pixel) px, glint_
     px.ready = true;
 }
 
-// The skip test (glint_surely_no_success_at: a draw happens where u1 < bound = max(n, 2) p 1.0001
+// The skip test (glint_surely_no_success_at: a draw happens where u1 < bound = T p 1.0001
 // + 1e-5) for every vertex and slope corner of one light, before any draw: bit j of bits[i] is set
 // where vertex i draws at corner j. It reads the hash word h whose top 23 bits make u1
 // (glint_open_unit_from_bits): (h >> 8) 2^-24 <= u1, so every h with u1 < bound passes

@@ -82,6 +82,7 @@ GLINT_FN glint_ibl_shares glint_ibl_level_shares(GLINT_INOUT(glint_grid_pixel) p
     real N = px.N;
     if (!(N > real(1e-30))) return o;
     glint_grid_pixel_vertices(px, g);
+    bool skip_test = glint_skip_test_applies(g);  // with the vertices' px.skip_scale: glint_surely_no_success
     real lit_total = real(0);
     for (int k = 0; k < 8; ++k) lit_total += lit.p[k];
     // Every vertex splits with the same probabilities: the tree once per pixel. The triangle
@@ -120,7 +121,7 @@ GLINT_FN glint_ibl_shares glint_ibl_level_shares(GLINT_INOUT(glint_grid_pixel) p
 #else
         uvec3 root_words = batch_words[i];  // hashed with the batch
 #endif
-        if (glint_surely_no_success(g, N * px.v.share[i], min(lit_total, real(1)), glint_open_unit_from_bits(root_words.x))) continue;
+        if (skip_test && glint_surely_no_success_scaled(px.skip_scale[i], min(lit_total, real(1)), glint_open_unit_from_bits(root_words.x))) continue;
         glint_multinomial_counts c = glint_multinomial_draw(N * px.v.share[i], tree, px.v.hash[i], root_words, g.variant, g.pow_method, root_cache);
         for (int k = 0; k < 7; ++k) weighted[k] += px.v.weight[i] * c.count[k];
         o.draws += K - 1;

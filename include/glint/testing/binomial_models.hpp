@@ -260,25 +260,33 @@ binomial_model model_of(binomial_variant variant, double N_in, double p_in, pow_
     }
     if (variant == binomial_variant::unbiased && Nr > real(2) && Nr < k::GLINT_BINOMIAL_WALK_END) {
         // The walk (kernels/binomial.glsl, glint_binomial_walk) with weight w, the Gaussian middle
-        // above with 1 - w: its atoms are the support points, each with the mass by which the
-        // walk's P(n > x), computed in `real` as the kernel computes it, steps down there.
+        // above with 1 - w. Component M = Na + 1 with probability f, else Na; its atoms are the
+        // support points k N / M, each with the share of u1 for which the kernel's count, computed
+        // in `real` as the kernel computes it, is k: P(count >= k) is where glint_binomial_walk_count
+        // steps down, found by bisection on u1 (the count is non-increasing in u1).
         const double w = static_cast<double>(k::glint_binomial_walk_weight(Nr));
         for (auto& a : d.atoms) a.probability *= 1 - w;
         for (auto& g : d.segments) g.scale *= 1 - w;
         const bool lower = pr <= real(0.5);
-        auto st = k::glint_binomial_walk_start(Nr, lower ? pr : real(1) - pr);
+        const real q = lower ? pr : real(1) - pr;
+        const int Na = static_cast<int>(Nr);
+        const double f = static_cast<double>(Nr - static_cast<real>(Na));
         auto place = [&](real x) { return lower ? static_cast<double>(x) : static_cast<double>(Nr - x); };
-        double above = std::min(std::max(static_cast<double>(st.survival), 0.0), 1.0);  // P(n > x), clamped as P(u1 < .)
-        d.atoms.push_back({place(real(0)), w * (1 - above)});
-        for (int j = 1; j <= st.Na; ++j) {
-            const auto after = k::glint_binomial_walk_step(st, j);
-            const real points[2] = {k::glint_binomial_walk_point(Nr, st.Na, j, false), k::glint_binomial_walk_point(Nr, st.Na, j, true)};
-            const real survivals[2] = {after.x, after.y};
-            for (int i = 0; i < 2; ++i) {
-                const double next = std::min(std::max(static_cast<double>(survivals[i]), 0.0), above);
-                d.atoms.push_back({place(points[i]), w * (above - next)});
-                above = next;
+        for (int M = Na; M <= Na + 1; ++M) {
+            const double share = (M == Na) ? 1 - f : f;
+            if (!(share > 0)) continue;
+            double above = 1;  // P(count >= k - 1)
+            for (int j = 1; j <= M; ++j) {
+                double lo = 0, hi = above;  // count(lo) >= j (or lo = 0), count(hi) < j
+                for (int it = 0; it < 80; ++it) {
+                    const double mid = 0.5 * (lo + hi);
+                    if (mid <= lo || mid >= hi) break;
+                    (k::glint_binomial_walk_count(M, q, static_cast<real>(mid)) >= j ? lo : hi) = mid;
+                }
+                d.atoms.push_back({place(static_cast<real>(j - 1) * Nr / static_cast<real>(M)), w * share * (above - lo)});
+                above = lo;
             }
+            d.atoms.push_back({place(Nr), w * share * above});
         }
     }
     return d;

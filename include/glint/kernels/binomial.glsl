@@ -943,18 +943,11 @@ GLINT_FN real glint_binomial_walk_tail(int M, real ratio, real mass, int k) {
     return sum;
 }
 
-// P(n > k) after subtracting the mass at k, or summed afresh where the difference has lost it.
-GLINT_FN real glint_binomial_walk_after(GLINT_INOUT(glint_binomial_walk_state) w, real survival, int k) {
-    if (survival < w.rescue) {
-        survival = glint_binomial_walk_tail(w.M, w.ratio, w.mass, k);
-        w.rescue = survival * real(1.0 / 1024.0);
-    }
-    return survival;
-}
-
 // The count of b(M, q) for v = u1 (or 1 - u1 mirrored): the largest k with P(n >= k) > v. Two
 // support points a step, with one division for both (1 / k = (k + 1) r and 1 / (k + 1) = k r with
-// r = q / (1 - q) / (k (k + 1))).
+// r = q / (1 - q) / (k (k + 1))). P(n > k) comes by difference, and where that falls below 2^-10
+// of its last fresh value, afresh from the masses beyond k. (The rescue as a function taking the
+// state inout, instead of written out twice, made the draws at N = 30, p = 1/2 1.3x slower in C++.)
 GLINT_FN int glint_binomial_walk_count(int M, real q, real v) {
     glint_binomial_walk_state w = glint_binomial_walk_start(M, q);
     if (!(w.survival > v)) return 0;
@@ -964,11 +957,19 @@ GLINT_FN int glint_binomial_walk_count(int M, real q, real v) {
         real kb = ka + real(1);
         real r = w.ratio / (ka * kb);
         w.mass *= da * (kb * r);
-        real s = glint_binomial_walk_after(w, w.survival - w.mass, k);
+        real s = w.survival - w.mass;
+        if (s < w.rescue) {
+            s = glint_binomial_walk_tail(M, w.ratio, w.mass, k);
+            w.rescue = s * real(1.0 / 1024.0);
+        }
         if (!(s > v)) return k;
         if (k + 1 >= M) break;
         w.mass *= (da - real(1)) * (ka * r);
-        w.survival = glint_binomial_walk_after(w, s - w.mass, k + 1);
+        w.survival = s - w.mass;
+        if (w.survival < w.rescue) {
+            w.survival = glint_binomial_walk_tail(M, w.ratio, w.mass, k + 1);
+            w.rescue = w.survival * real(1.0 / 1024.0);
+        }
         if (!(w.survival > v)) return k + 1;
         ka += real(2);
         da -= real(2);

@@ -747,16 +747,15 @@ GLINT_FN vec3 glint_binomial_band_fit(real N, real p_near) {
     return vec3(centre / sigma, sigma, centre);
 }
 
-// (t, sigma, sigma t) of the middle where glint_binomial_middle_needs_no_ends: glint_binomial_closed_fit
-// from lambda = 3 on where the far bound is clear, else the band's polynomials (fitted for N >= 32,
-// where the sampler reads them). Out of line in C++: inlined into its callers it changed how GCC
+// (t, sigma, sigma t) of the middle where glint_binomial_middle_needs_no_ends (N >= 32):
+// glint_binomial_closed_fit from lambda = 3 on, else the band's polynomials. Out of line in C++: inlined into its callers it changed how GCC
 // inlines the grid's lattice code in the same translation unit, for more instructions (callgrind,
 // glint_frame_loop: point 2 105.4M against 104.9M, ibl 4 1 43.7M against 43.2M).
 GLINT_FN_OUT_OF_LINE vec3 glint_binomial_middle_fit(real N, real p_near) {
     real lambda = N * p_near;
-    // N > 11 only spares the sqrt: the far bound is never clear below N = 11.45 from lambda = 3 on.
-    if (lambda >= GLINT_BINOMIAL_CLOSED_LAMBDA && N > real(11) &&
-        glint_binomial_far_bound_clear(N, lambda - real(1), sqrt(lambda * (real(1) - p_near)))) {
+    // The sampler asks from N = 32 on, where the far bound is always clear: below N = 32 (not the
+    // sampler's) the closed form holds where glint_binomial_far_bound_clear says so.
+    if (lambda >= GLINT_BINOMIAL_CLOSED_LAMBDA) {
         vec2 f = glint_binomial_closed_fit(N, p_near);
         return vec3(f.y / f.x, f.x, f.y);
     }
@@ -895,7 +894,6 @@ GLINT_CONST(int) GLINT_BINOMIAL_WALK_MAX_TRIALS = 40;  // ceil(WALK_END): the lo
 
 // b(M, q) at support point 0 (M < 64 trials, q = p_near <= 1/2): the mass there, P(n > 0).
 struct glint_binomial_walk_state {
-    int M;
     real ratio;     // q / (1 - q)
     real mass;      // b(k; M, q) at the current k
     real survival;  // P(n > k)
@@ -904,7 +902,6 @@ struct glint_binomial_walk_state {
 
 GLINT_FN glint_binomial_walk_state glint_binomial_walk_start(int M, real q) {
     glint_binomial_walk_state w;
-    w.M = M;
     real m = real(M);
     real x = real(1) - q;
     w.ratio = q / x;

@@ -329,18 +329,14 @@ GLINT_FN bool glint_skip_test_applies(glint_grid_params g) {
     return g.variant == GLINT_BINOMIAL_UNBIASED && g.pow_method == GLINT_POW_LOG1P;
 }
 
-// The bound itself, for loops that hoist glint_skip_test_applies and T.
-GLINT_FN bool glint_surely_no_success_at(real trials, real p, real u1) {
-    return u1 >= trials * p * real(1.0001) + real(1e-5);
-}
-
-// The same with the vertex's scale as glint_grid_pixel holds it (skip_scale: T 1.0001).
+// The bound with the vertex's scale as glint_grid_pixel holds it (skip_scale: T 1.0001), for loops
+// that hoist glint_skip_test_applies.
 GLINT_FN bool glint_surely_no_success_scaled(real scale, real p, real u1) {
     return u1 >= scale * p + real(1e-5);
 }
 
 GLINT_FN bool glint_surely_no_success(glint_grid_params g, real N, real p, real u1) {
-    return glint_skip_test_applies(g) && glint_surely_no_success_at(glint_binomial_trials_bound(N), p, u1);
+    return glint_skip_test_applies(g) && u1 >= glint_binomial_trials_bound(N) * p * real(1.0001) + real(1e-5);
 }
 
 // N = density x footprint area, finite in float.
@@ -417,7 +413,7 @@ GLINT_FN void glint_grid_pixel_vertices(GLINT_INOUT(glint_grid_pixel) px, glint_
     px.ready = true;
 }
 
-// The skip test (glint_surely_no_success_at: a draw happens where u1 < bound = T p 1.0001
+// The skip test (glint_surely_no_success: a draw happens where u1 < bound = T p 1.0001
 // + 1e-5) for every vertex and slope corner of one light, before any draw: bit j of bits[i] is set
 // where vertex i draws at corner j. It reads the hash word h whose top 23 bits make u1
 // (glint_open_unit_from_bits): (h >> 8) 2^-24 <= u1, so every h with u1 < bound passes

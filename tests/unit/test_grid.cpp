@@ -313,6 +313,62 @@ TEST_CASE("grid: the skip test never changes R: grid_sample equals R from its de
     CHECK(lit > compared / 10);            // and many footprints reflect
 }
 
+// The skip test's AVX2 version (C++ with GCC on x86-64, where the CPU has AVX2) against the
+// portable loops that GLSL and the baseline build run: the same bits for every vertex and corner.
+// 3000 pixels, four or one lattice point, ln densities -2 to 9 (N from about 0.01 to 2e4),
+// corner probabilities 1e-5 to 0.5 with some corners dead (p = 0 or outside `live`), with and
+// without the skip test. That the comparison sees a difference: the same masks with one corner's p
+// doubled differ in many pixels.
+TEST_CASE("grid: the skip test's AVX2 masks equal the portable loops' bit for bit") {
+    const bool avx2 = K::glint_cpu_avx2();
+    MESSAGE("AVX2 masks: " << std::string(avx2 ? "compared" : "not compared (a CPU without AVX2, or a build without the AVX2 path): the portable loops against themselves"));
+    int pixels = 0, differ = 0, set_bits = 0, clear_bits = 0, wrong_caught = 0;
+    for (std::uint32_t i = 0; i < 3000; ++i) {
+        const glm::vec2 r1 = random_unit(i, 61), r2 = random_unit(i, 62), r3 = random_unit(i, 63), r4 = random_unit(i, 64);
+        glint::grid_params<float> gp;
+        gp.log_density = -2.0f + 11.0f * r1.x;
+        gp.density_sigma = (i % 5 == 4) ? 0.5f : 0.0f;
+        gp.seed = i;
+        const auto g = glint::detail::to_kernel(gp);
+        glm::vec2 dx, dy;
+        footprint(0.05f + 2.0f * r1.y, 1.0f + 15.0f * r2.x, 3.14159265f * r2.y, dx, dy);
+        auto px = glint::grid_pixel_setup(100.0f * r3, dx, dy, gp, (i % 2) ? r4.x : -1.0f);
+        K::glint_grid_pixel_vertices(px, g);
+        std::uint32_t key[4];
+        float p[4];
+        int live = 0;
+        for (int j = 0; j < 4; ++j) {
+            const glm::vec2 r = random_unit(i, 70 + static_cast<std::uint32_t>(j));
+            key[j] = glint::pcg3d(glm::uvec3(i, static_cast<std::uint32_t>(j), 0x5eu)).x;
+            p[j] = (r.x < 0.1f) ? 0.0f : std::pow(10.0f, -5.0f + 4.7f * r.y);
+            live |= (r.x < 0.9f) ? (1 << j) : 0;
+        }
+        const bool skip_test = i % 7 != 6;
+        const auto fast = K::glint_skip_test_masks(px, key, p, live, skip_test);
+        const auto portable = K::glint_skip_test_masks_inline(px, key, p, live, skip_test);
+        bool same = fast.any == portable.any;
+        for (int v = 0; v < 12; ++v) {
+            same = same && fast.bits[v] == portable.bits[v];
+            if (v < px.v.count)
+                for (int j = 0; j < 4; ++j) ((portable.bits[v] >> j) & 1 ? set_bits : clear_bits) += 1;
+        }
+        differ += !same;
+        ++pixels;
+        float doubled[4] = {p[0], p[1], p[2], p[3]};
+        doubled[i % 4] = std::min(1.0f, 2.0f * p[i % 4]);
+        const auto wrong = K::glint_skip_test_masks(px, key, doubled, live, skip_test);
+        bool wrong_same = wrong.any == portable.any;
+        for (int v = 0; v < 12; ++v) wrong_same = wrong_same && wrong.bits[v] == portable.bits[v];
+        wrong_caught += !wrong_same;
+    }
+    MESSAGE(pixels << " pixels, " << differ << " with other masks; vertex-corner bits set " << set_bits << ", clear " << clear_bits
+                   << "; pixels where one corner's p doubled changes the masks: " << wrong_caught);
+    CHECK(differ == 0);
+    CHECK(set_bits > 1000);
+    CHECK(clear_bits > 1000);
+    CHECK(wrong_caught > 100);
+}
+
 TEST_CASE("grid: finite and non-negative on hard inputs: zero and huge footprints, grazing and horizon half vectors, roughness 1e-4, extreme densities") {
     std::size_t bad = 0, total = 0;
     const glm::vec2 zero(0.0f);

@@ -27,6 +27,9 @@ using namespace glm;  // NOLINT: confined to glint::detail::glsl
 // A kernel function kept out of line in C++ (in GLSL: as GLINT_FN): for a rarely taken, long path
 // whose inlined code would slow its callers' common paths.
 #define GLINT_FN_OUT_OF_LINE __attribute__((noinline)) static
+// A kernel function always inlined in C++ (in GLSL: as GLINT_FN): the body of a function that C++
+// compiles twice, for the baseline and for AVX2 (target("avx2") code inlines it as AVX2).
+#define GLINT_FN_INLINE __attribute__((always_inline)) static inline
 // An out-parameter (in GLSL: `out T`).
 #define GLINT_OUT(T) T&
 // An in-out parameter (in GLSL: `inout T`).

@@ -2,6 +2,7 @@
 // Removes every macro kernel_begin.hpp defined.
 #undef GLINT_FN
 #undef GLINT_FN_OUT_OF_LINE
+#undef GLINT_FN_INLINE
 #undef GLINT_OUT
 #undef GLINT_INOUT
 #undef GLINT_CONST

@@ -7,6 +7,7 @@
 #define real float
 #define GLINT_FN
 #define GLINT_FN_OUT_OF_LINE
+#define GLINT_FN_INLINE
 #define GLINT_OUT(T) out T
 #define GLINT_INOUT(T) inout T
 #define GLINT_CONST(T) const T

@@ -121,6 +121,15 @@ GLINT_FN vec2 glint_floor_bounded(vec2 x) {
     return vec2(glint_floor_bounded(x.x), glint_floor_bounded(x.y));
 }
 
+// |x|: GLSL's abs; in C++ std::fabs, one bitwise and, where GLM's abs compares and branches.
+GLINT_FN real glint_abs(real x) {
+#if defined(GLINT_GLSL)
+    return abs(x);
+#else
+    return std::fabs(x);
+#endif
+}
+
 // The number of bits set in x: GLSL's bitCount; in C++ the same sum of bit fields in 12
 // instructions, inline (GLM's bitCount loops over masks, and GCC's __builtin_popcount without
 // -mpopcnt calls libgcc: 21 instructions and a call).

@@ -135,9 +135,11 @@ section grid_section(double min_time) {
     // renderer's smooth path through its glint switch); 4 and 5: glints at ln density 14 with
     // and without the smooth-result gate (where most footprints hold enough microfacets); 6: glints
     // on one lattice point per pixel (scene_options::stochastic_lattice).
+    // Each frame in round_count rounds (report.hpp), the least time of each.
+    for (int round = 0; round < round_count; ++round)
     for (light_type t : {light_type::point, light_type::sun, light_type::area})
         for (int mode = 0; mode < 7; ++mode) {
-            add(std::string("frame_") + name(t) + "_" + std::to_string(mode), [t, mode, &cam, fw, fh](std::size_t) {
+            add(std::string("frame_") + name(t) + "_" + std::to_string(mode) + round_suffix(round), [t, mode, &cam, fw, fh](std::size_t) {
                 scene_options opt;
                 opt.smooth = mode == 0 || mode == 3;
                 opt.stochastic_lattice = mode == 6;
@@ -150,16 +152,17 @@ section grid_section(double min_time) {
                 for (int y = 0; y < fh; ++y)
                     for (int x = 0; x < fw; ++x) acc += render_pixel(opt, ls, cam, x, y, c).x;
                 benchmark::DoNotOptimize(acc);
-            }, min_time * 4);
+            }, min_time);
         }
     // --- several point lights on one footprint -------------------------------------------------
     // Per pixel: k lights shaded smooth, with glints on one shared footprint (grid_pixel), and
     // with glints through a footprint of their own per light (grid_sample for each), and on one
     // shared footprint's one lattice point.
     static const glint_bench::light_pixels lp;
+    for (int round = 0; round < round_count; ++round)
     for (int k : {1, 8})
         for (int mode = 0; mode < 4; ++mode)
-            add_inline("lights_" + std::to_string(mode) + "_" + std::to_string(k), [k, mode](std::size_t j) {
+            add_inline("lights_" + std::to_string(mode) + "_" + std::to_string(k) + round_suffix(round), [k, mode](std::size_t j) {
                 benchmark::DoNotOptimize(glint_bench::shade_light_pixel(lp, static_cast<int>(j % glint_bench::light_pixels::pixels), k, mode));
             }, min_time);
     const auto ns = run_all();

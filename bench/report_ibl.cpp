@@ -76,10 +76,12 @@ section ibl_section(double min_time) {
     // Shading: per pixel of a 160 x 100 view of the sphere, smooth (mode 0) against glints (1), and
     // glints on one lattice point per pixel (2; glint::grid_pixel_setup with a lattice_u).
     const char* labels[] = {"K=4 linear", "K=4 log", "K=8 linear", "K=8 log"};
+    // Each frame in round_count rounds (report.hpp), the least time of each.
+    for (int round = 0; round < round_count; ++round)
     for (std::size_t e = 0; e < envs.size(); ++e)
         for (int mode = 0; mode < 3; ++mode) {
             const glint::environment* env = envs[e].get();
-            add("ibl_" + std::to_string(e) + "_" + std::to_string(mode), [env, mode](std::size_t it) {
+            add("ibl_" + std::to_string(e) + "_" + std::to_string(mode) + round_suffix(round), [env, mode](std::size_t it) {
                 float acc = 0;
                 const float sa = 0.35f, alpha = sa * sa, dh = env->total_area(alpha);
                 for (int y = 0; y < 100; ++y)
@@ -109,7 +111,7 @@ section ibl_section(double min_time) {
                         acc += env->albedo(cos_o, sa) * radiance * m;
                     }
                 benchmark::DoNotOptimize(acc);
-            }, min_time * 4);
+            }, min_time);
         }
     const auto ns = run_all();
     md << "## Image-based lighting of glints (glint/ibl.hpp)\n\n";

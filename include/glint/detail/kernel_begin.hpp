@@ -8,6 +8,7 @@
 // leaks into user code. No include guard: the pair is used once, by glint/detail/kernels.hpp.
 #include <cstddef>
 #include <cstdint>
+#include <cstring>
 #include <type_traits>
 
 #include <glm/glm.hpp>

@@ -250,7 +250,8 @@ section grid_section(double min_time) {
     }
     std::ostringstream t3;
     t3 << "Frame cost of the showcase scene (examples/lights_scene.hpp, " << fw << "x" << fh
-       << ", one thread): glint shading against smooth shading of the same scene, ln density 5 (the showcase). \"Glints\" uses the "
+       << ", one thread; each frame the least time of " << round_count
+       << " rounds, the frames interleaved): glint shading against smooth shading of the same scene, ln density 5 (the showcase). \"Glints\" uses the "
           "smooth-result gate (smooth_tolerance 0.01: footprints whose estimate's relative standard deviation is surely below 1% "
           "return the smooth result without drawing); \"all sampled\" turns the gate off; \"off\" switches glints off. At ln "
           "density 14 most footprints hold enough microfacets for the gate: the last columns show the time it saves. \"One lattice "
@@ -275,7 +276,8 @@ section grid_section(double min_time) {
                      one_point_extra = (at(3, 8) - at(3, 1)) / 7;
         t5 << "Several point lights on glinty pixels (1024 pixels of the showcase's flake paint: GGX, alpha 0.25, ln density 5, footprints "
               "of 0.4 to 0.8 uv units, N about 20 to 80; one thread; each light's smooth specular is GGX D, Smith G2 and silver's "
-              "conductor Fresnel). The cost of each extra light is (t(8 lights) - t(1 light)) / 7.\n\n"
+              "conductor Fresnel; each time the least of "
+           << round_count << " rounds, interleaved). The cost of each extra light is (t(8 lights) - t(1 light)) / 7.\n\n"
            << "| shading | 1 light ns | 8 lights ns | each extra light ns | extra light / its smooth cost |\n|---|---|---|---|---|\n"
            << "| smooth | " << fmt(at(0, 1)) << " | " << fmt(at(0, 8)) << " | " << fmt(smooth_extra) << " | 1 |\n"
            << "| glints, one footprint for every light (grid_pixel) | " << fmt(at(1, 1)) << " | " << fmt(at(1, 8)) << " | " << fmt(shared_extra)

@@ -118,7 +118,8 @@ section ibl_section(double min_time) {
     std::ostringstream t;
     t << "Environment `sunset.exr` (" << img.width << " x " << img.height << "), 6 roughness levels, 64 GGX samples per texel, "
       << "one thread. Shading: a sphere of radius 50 pixels in a 160 x 100 view (7825 pixels), smooth split-sum IBL against glints (ln density "
-         "4), one run:\n\n"
+         "4); each frame the least time of "
+      << round_count << " rounds, the frames interleaved:\n\n"
       << "| knob | prefilter s | smooth us/frame | glints us/frame | glints / smooth | one lattice point / smooth |\n|---|---|---|---|---|---|\n";
     for (std::size_t e = 0; e < envs.size(); ++e) {
         const double s0 = ns.at("ibl_" + std::to_string(e) + "_0"), s1 = ns.at("ibl_" + std::to_string(e) + "_1"),

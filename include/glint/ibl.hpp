@@ -132,10 +132,10 @@ private:
         return s;
     }
 
-    // out[0..read) += weight x the GL_LINEAR filtered texel of m (C channels a texel) at uv. The
-    // counts the lookups read (3, the radiance; 6 to 11, 3 + K for K = 3..8) with a loop of
-    // constant length, which GCC unrolls: the K = 4 lookup of every channel took 645 instead of
-    // 740 us for the IBL report's 7825 pixels (least of three alternating runs, CPU).
+    // out[0..read) += weight x the GL_LINEAR filtered texel of m (C channels a texel) at uv. Each
+    // channel count the lookups read (3, the radiance; 6 to 11, 3 + K for K = 3..8) has its own
+    // loop of constant length, which GCC unrolls: the K = 4 lookup of every channel took 645
+    // instead of 740 us for the IBL report's 7825 pixels (least of three alternating runs, CPU).
     static void add_bilinear(const map& m, const glm::vec2& uv, int C, int read, float weight, float* out) {
         switch (read) {
             case 3: add_bilinear_of<3>(m, uv, C, read, weight, out); return;

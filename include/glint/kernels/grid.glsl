@@ -178,7 +178,7 @@ GLINT_FN glint_triangle glint_triangle_grid(vec2 q) {
     t.vertex[1] = base + ivec2(1 - u, u);
     t.vertex[2] = base + ivec2(u, 1 - u);
     // Lower: 1 - f.x - f.y, f.x, f.y; upper: their negatives plus (0, 1, 1); as absolute values,
-    // which compile without a branch (GCC compiled a select of two floats to one).
+    // which compile without a branch (GCC compiled a select of two floats to a branch).
     real uf = real(u);
     t.weight[0] = glint_abs(real(1) - f.x - f.y);
     t.weight[1] = glint_abs(uf - f.x);

@@ -9,6 +9,10 @@
 //   glint_frame_loop ibl-stochastic K FRAMES  the same on one lattice point per pixel
 //                                          (sunset.exr); count it alone with
 //                                          --toggle-collect='glint_ibl_estimate*'
+//   glint_frame_loop ibl-lookup K FRAMES   the same sphere's environment lookups alone, of every
+//                                          channel (what a glint frame reads); prints the least
+//                                          frame time
+//   glint_frame_loop ibl-radiance K FRAMES the lookups of the radiance alone (the smooth frame's)
 //   glint_frame_loop draw N P              2e5 draws of glint::binomial_unbiased at (N, P)
 //   glint_frame_loop lights K MODE REPS    the report's several-lights workload
 //                                          (bench/light_pixels.hpp): its 1024 pixels with K
@@ -83,6 +87,32 @@ int main(int argc, char** argv) {
                 }
         const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         std::printf("%s: %.0f us a frame (mean of %d)\n", mode, 1e6 * seconds / std::max(frames, 1), frames);
+    } else if (argc == 4 && (!std::strcmp(mode, "ibl-lookup") || !std::strcmp(mode, "ibl-radiance"))) {
+        const bool all = !std::strcmp(mode, "ibl-lookup");
+        const auto img = glint::io::read_exr(std::string(GLINT_DATA_DIR) + "/envmaps/sunset.exr");
+        glint::ibl_options o;
+        o.levels = std::atoi(argv[2]);
+        const auto env = glint::build_environment(img.width, img.height, img.rgb, o);
+        const float sa = 0.35f;
+        const int frames = std::atoi(argv[3]);
+        double least = 1e30;
+        for (int frame = 0; frame < frames; ++frame) {
+            const auto start = std::chrono::steady_clock::now();
+            for (int y = 0; y < 100; ++y)
+                for (int x = 0; x < 160; ++x) {
+                    const float px = (static_cast<float>(x) - 80) / 50, py = (50 - static_cast<float>(y)) / 50, rr = px * px + py * py;
+                    if (rr >= 1) continue;
+                    const glm::vec3 r = glm::reflect(glm::vec3(0, 0, -1), glm::vec3(px, py, std::sqrt(1 - rr)));
+                    if (all) {
+                        const auto s = env.lookup(r, sa);
+                        sum += static_cast<double>(s.radiance.x + s.indicators.w[1]);
+                    } else {
+                        sum += static_cast<double>(env.lookup_radiance(r, sa).x);
+                    }
+                }
+            least = std::min(least, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+        }
+        std::printf("%s: %.0f us a frame (the least of %d)\n", mode, 1e6 * least, frames);
     } else if (argc == 4 && !std::strcmp(mode, "draw")) {
         const float N = std::strtof(argv[2], nullptr), p = std::strtof(argv[3], nullptr);
         for (std::uint32_t i = 0; i < 200000; ++i) {
@@ -95,7 +125,7 @@ int main(int argc, char** argv) {
         for (int rep = 0; rep < std::atoi(argv[4]); ++rep)
             for (int i = 0; i < glint_bench::light_pixels::pixels; ++i) sum += static_cast<double>(glint_bench::shade_light_pixel(lp, i, k, shading).x);
     } else {
-        std::fprintf(stderr, "usage: glint_frame_loop point|point-smooth|point-stochastic FRAMES | ibl|ibl-stochastic K FRAMES | draw N P | lights K MODE REPS\n");
+        std::fprintf(stderr, "usage: glint_frame_loop point|point-smooth|point-stochastic FRAMES | ibl|ibl-stochastic|ibl-lookup|ibl-radiance K FRAMES | draw N P | lights K MODE REPS\n");
         return 2;
     }
     std::printf("%s: sum %.9g\n", mode, sum);

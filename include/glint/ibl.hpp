@@ -132,33 +132,14 @@ private:
         return s;
     }
 
-    // out[0..read) += weight x the GL_LINEAR filtered texel of m (C channels a texel) at uv. Each
-    // channel count the lookups read (3, the radiance; 6 to 11, 3 + K for K = 3..8) has its own
-    // loop of constant length, which GCC unrolls: the K = 4 lookup of every channel took 645
-    // instead of 740 us for the IBL report's 7825 pixels (least of three alternating runs, CPU).
+    // out[0..read) += weight x the GL_LINEAR filtered texel of m (C channels a texel) at uv.
     static void add_bilinear(const map& m, const glm::vec2& uv, int C, int read, float weight, float* out) {
-        switch (read) {
-            case 3: add_bilinear_of<3>(m, uv, C, read, weight, out); return;
-            case 6: add_bilinear_of<6>(m, uv, C, read, weight, out); return;
-            case 7: add_bilinear_of<7>(m, uv, C, read, weight, out); return;
-            case 8: add_bilinear_of<8>(m, uv, C, read, weight, out); return;
-            case 9: add_bilinear_of<9>(m, uv, C, read, weight, out); return;
-            case 10: add_bilinear_of<10>(m, uv, C, read, weight, out); return;
-            case 11: add_bilinear_of<11>(m, uv, C, read, weight, out); return;
-            default: add_bilinear_of<0>(m, uv, C, read, weight, out); return;
-        }
-    }
-
-    // add_bilinear for R channels (0: `read` of them).
-    template <int R>
-    static void add_bilinear_of(const map& m, const glm::vec2& uv, int C, int read, float weight, float* out) {
-        const int n = (R > 0) ? R : read;
         const auto taps = detail::glsl::kernels<float>::glint_bilinear(uv, m.width, m.height);
         for (int i = 0; i < 4; ++i) {
             const float w = weight * taps.weight[i];
             const float* px = &m.data[(static_cast<std::size_t>(taps.texel[i].y) * static_cast<std::size_t>(m.width) + static_cast<std::size_t>(taps.texel[i].x)) *
                                       static_cast<std::size_t>(C)];
-            for (int c = 0; c < n; ++c) out[c] += w * px[c];
+            for (int c = 0; c < read; ++c) out[c] += w * px[c];
         }
     }
 

@@ -45,6 +45,23 @@ __attribute__((noinline)) glint::ibl_estimate<float> glint_ibl_estimate(glm::vec
     return glint::ibl_sample(px, g, env.levels(), s.indicators, e_d, d_h);
 }
 
+// The IBL workloads' environment: sunset.exr with K levels.
+glint::environment sunset_environment(int levels) {
+    const auto img = glint::io::read_exr(std::string(GLINT_DATA_DIR) + "/envmaps/sunset.exr");
+    glint::ibl_options o;
+    o.levels = levels;
+    return glint::build_environment(img.width, img.height, img.rgb, o);
+}
+
+// The IBL workloads' sphere (bench/report_ibl.cpp's): its normal at pixel (x, y) of the 160 x 100
+// view, or false off the sphere.
+bool sphere_normal(int x, int y, glm::vec3& n) {
+    const float px = (static_cast<float>(x) - 80) / 50, py = (50 - static_cast<float>(y)) / 50, rr = px * px + py * py;
+    if (rr >= 1) return false;
+    n = glm::vec3(px, py, std::sqrt(1 - rr));
+    return true;
+}
+
 int main(int argc, char** argv) {
     const char* mode = argc > 1 ? argv[1] : "";
     double sum = 0;
@@ -63,19 +80,15 @@ int main(int argc, char** argv) {
         }
     } else if (argc == 4 && (!std::strcmp(mode, "ibl") || !std::strcmp(mode, "ibl-stochastic"))) {
         const bool stochastic = !std::strcmp(mode, "ibl-stochastic");
-        const auto img = glint::io::read_exr(std::string(GLINT_DATA_DIR) + "/envmaps/sunset.exr");
-        glint::ibl_options o;
-        o.levels = std::atoi(argv[2]);
-        const auto env = glint::build_environment(img.width, img.height, img.rgb, o);
+        const auto env = sunset_environment(std::atoi(argv[2]));
         const float sa = 0.35f, dh = env.total_area(sa * sa);
         const auto start = std::chrono::steady_clock::now();
         const int frames = std::atoi(argv[3]);
         for (int frame = 0; frame < frames; ++frame)
             for (int y = 0; y < 100; ++y)
                 for (int x = 0; x < 160; ++x) {
-                    const float px = (static_cast<float>(x) - 80) / 50, py = (50 - static_cast<float>(y)) / 50, rr = px * px + py * py;
-                    if (rr >= 1) continue;
-                    const glm::vec3 n(px, py, std::sqrt(1 - rr));
+                    glm::vec3 n;
+                    if (!sphere_normal(x, y, n)) continue;
                     const auto s = env.lookup(glm::reflect(glm::vec3(0, 0, -1), n), sa);
                     glint::grid_params<float> g;
                     g.log_density = 4.0f;
@@ -89,10 +102,7 @@ int main(int argc, char** argv) {
         std::printf("%s: %.0f us a frame (mean of %d)\n", mode, 1e6 * seconds / std::max(frames, 1), frames);
     } else if (argc == 4 && (!std::strcmp(mode, "ibl-lookup") || !std::strcmp(mode, "ibl-radiance"))) {
         const bool all = !std::strcmp(mode, "ibl-lookup");
-        const auto img = glint::io::read_exr(std::string(GLINT_DATA_DIR) + "/envmaps/sunset.exr");
-        glint::ibl_options o;
-        o.levels = std::atoi(argv[2]);
-        const auto env = glint::build_environment(img.width, img.height, img.rgb, o);
+        const auto env = sunset_environment(std::atoi(argv[2]));
         const float sa = 0.35f;
         const int frames = std::atoi(argv[3]);
         double least = 1e30;
@@ -100,9 +110,9 @@ int main(int argc, char** argv) {
             const auto start = std::chrono::steady_clock::now();
             for (int y = 0; y < 100; ++y)
                 for (int x = 0; x < 160; ++x) {
-                    const float px = (static_cast<float>(x) - 80) / 50, py = (50 - static_cast<float>(y)) / 50, rr = px * px + py * py;
-                    if (rr >= 1) continue;
-                    const glm::vec3 r = glm::reflect(glm::vec3(0, 0, -1), glm::vec3(px, py, std::sqrt(1 - rr)));
+                    glm::vec3 n;
+                    if (!sphere_normal(x, y, n)) continue;
+                    const glm::vec3 r = glm::reflect(glm::vec3(0, 0, -1), n);
                     if (all) {
                         const auto s = env.lookup(r, sa);
                         sum += static_cast<double>(s.radiance.x + s.indicators.w[1]);

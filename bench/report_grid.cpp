@@ -137,34 +137,34 @@ section grid_section(double min_time) {
     // on one lattice point per pixel (scene_options::stochastic_lattice).
     // Each frame in round_count rounds (report.hpp), the least time of each.
     for (int round = 0; round < round_count; ++round)
-    for (light_type t : {light_type::point, light_type::sun, light_type::area})
-        for (int mode = 0; mode < 7; ++mode) {
-            add(std::string("frame_") + name(t) + "_" + std::to_string(mode) + round_suffix(round), [t, mode, &cam, fw, fh](std::size_t) {
-                scene_options opt;
-                opt.smooth = mode == 0 || mode == 3;
-                opt.stochastic_lattice = mode == 6;
-                opt.smooth_tolerance = (mode == 2 || mode == 5) ? 0.0f : 0.01f;
-                if (mode == 4 || mode == 5) opt.log_density = 14.0f;
-                light_setup ls;
-                ls.type = t;
-                shading_counters c;
-                float acc = 0;
-                for (int y = 0; y < fh; ++y)
-                    for (int x = 0; x < fw; ++x) acc += render_pixel(opt, ls, cam, x, y, c).x;
-                benchmark::DoNotOptimize(acc);
-            }, min_time);
-        }
+        for (light_type t : {light_type::point, light_type::sun, light_type::area})
+            for (int mode = 0; mode < 7; ++mode) {
+                add(std::string("frame_") + name(t) + "_" + std::to_string(mode) + round_suffix(round), [t, mode, &cam, fw, fh](std::size_t) {
+                    scene_options opt;
+                    opt.smooth = mode == 0 || mode == 3;
+                    opt.stochastic_lattice = mode == 6;
+                    opt.smooth_tolerance = (mode == 2 || mode == 5) ? 0.0f : 0.01f;
+                    if (mode == 4 || mode == 5) opt.log_density = 14.0f;
+                    light_setup ls;
+                    ls.type = t;
+                    shading_counters c;
+                    float acc = 0;
+                    for (int y = 0; y < fh; ++y)
+                        for (int x = 0; x < fw; ++x) acc += render_pixel(opt, ls, cam, x, y, c).x;
+                    benchmark::DoNotOptimize(acc);
+                }, min_time);
+            }
     // --- several point lights on one footprint -------------------------------------------------
     // Per pixel: k lights shaded smooth, with glints on one shared footprint (grid_pixel), and
     // with glints through a footprint of their own per light (grid_sample for each), and on one
     // shared footprint's one lattice point.
     static const glint_bench::light_pixels lp;
     for (int round = 0; round < round_count; ++round)
-    for (int k : {1, 8})
-        for (int mode = 0; mode < 4; ++mode)
-            add_inline("lights_" + std::to_string(mode) + "_" + std::to_string(k) + round_suffix(round), [k, mode](std::size_t j) {
-                benchmark::DoNotOptimize(glint_bench::shade_light_pixel(lp, static_cast<int>(j % glint_bench::light_pixels::pixels), k, mode));
-            }, min_time);
+        for (int k : {1, 8})
+            for (int mode = 0; mode < 4; ++mode)
+                add_inline("lights_" + std::to_string(mode) + "_" + std::to_string(k) + round_suffix(round), [k, mode](std::size_t j) {
+                    benchmark::DoNotOptimize(glint_bench::shade_light_pixel(lp, static_cast<int>(j % glint_bench::light_pixels::pixels), k, mode));
+                }, min_time);
     const auto ns = run_all();
 
     md << "## Glint NDF on the grid, lights (glint/grid.hpp, glint/microfacet.hpp)\n\n";

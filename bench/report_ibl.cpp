@@ -78,41 +78,41 @@ section ibl_section(double min_time) {
     const char* labels[] = {"K=4 linear", "K=4 log", "K=8 linear", "K=8 log"};
     // Each frame in round_count rounds (report.hpp), the least time of each.
     for (int round = 0; round < round_count; ++round)
-    for (std::size_t e = 0; e < envs.size(); ++e)
-        for (int mode = 0; mode < 3; ++mode) {
-            const glint::environment* env = envs[e].get();
-            add("ibl_" + std::to_string(e) + "_" + std::to_string(mode) + round_suffix(round), [env, mode](std::size_t it) {
-                float acc = 0;
-                const float sa = 0.35f, alpha = sa * sa, dh = env->total_area(alpha);
-                for (int y = 0; y < 100; ++y)
-                    for (int x = 0; x < 160; ++x) {
-                        // A sphere seen from afar: normal from the pixel, view along -z.
-                        const float px = (static_cast<float>(x) - 80) / 50, py = (50 - static_cast<float>(y)) / 50, rr = px * px + py * py;
-                        if (rr >= 1) continue;
-                        const glm::vec3 n(px, py, std::sqrt(1 - rr)), d(0, 0, -1);
-                        const float cos_o = n.z;
-                        // Smooth shading reads the radiance alone, glints the K indicators too.
-                        const glm::vec3 r = glm::reflect(d, n);
-                        float m = 1, radiance = 0;
-                        if (mode == 0) {
-                            radiance = env->lookup_radiance(r, sa).x;
-                        } else {
-                            const auto s = env->lookup(r, sa);
-                            radiance = s.radiance.x;
-                            glint::grid_params<float> g;
-                            g.log_density = 4.0f;
-                            g.seed = static_cast<std::uint32_t>(it);
-                            const glm::vec2 uv(static_cast<float>(x), static_cast<float>(y));
-                            auto pixel = glint::grid_pixel_setup(uv, glm::vec2(1, 0), glm::vec2(0, 1), g,
-                                                                 glint_examples::pixel_lattice_u(mode == 2, x, y, g.seed));
-                            const auto est = glint::ibl_sample(pixel, g, env->levels(), s.indicators, env->visible_area(cos_o, sa), dh);
-                            m = glint::modulation(est);
+        for (std::size_t e = 0; e < envs.size(); ++e)
+            for (int mode = 0; mode < 3; ++mode) {
+                const glint::environment* env = envs[e].get();
+                add("ibl_" + std::to_string(e) + "_" + std::to_string(mode) + round_suffix(round), [env, mode](std::size_t it) {
+                    float acc = 0;
+                    const float sa = 0.35f, alpha = sa * sa, dh = env->total_area(alpha);
+                    for (int y = 0; y < 100; ++y)
+                        for (int x = 0; x < 160; ++x) {
+                            // A sphere seen from afar: normal from the pixel, view along -z.
+                            const float px = (static_cast<float>(x) - 80) / 50, py = (50 - static_cast<float>(y)) / 50, rr = px * px + py * py;
+                            if (rr >= 1) continue;
+                            const glm::vec3 n(px, py, std::sqrt(1 - rr)), d(0, 0, -1);
+                            const float cos_o = n.z;
+                            // Smooth shading reads the radiance alone, glints the K indicators too.
+                            const glm::vec3 r = glm::reflect(d, n);
+                            float m = 1, radiance = 0;
+                            if (mode == 0) {
+                                radiance = env->lookup_radiance(r, sa).x;
+                            } else {
+                                const auto s = env->lookup(r, sa);
+                                radiance = s.radiance.x;
+                                glint::grid_params<float> g;
+                                g.log_density = 4.0f;
+                                g.seed = static_cast<std::uint32_t>(it);
+                                const glm::vec2 uv(static_cast<float>(x), static_cast<float>(y));
+                                auto pixel = glint::grid_pixel_setup(uv, glm::vec2(1, 0), glm::vec2(0, 1), g,
+                                                                     glint_examples::pixel_lattice_u(mode == 2, x, y, g.seed));
+                                const auto est = glint::ibl_sample(pixel, g, env->levels(), s.indicators, env->visible_area(cos_o, sa), dh);
+                                m = glint::modulation(est);
+                            }
+                            acc += env->albedo(cos_o, sa) * radiance * m;
                         }
-                        acc += env->albedo(cos_o, sa) * radiance * m;
-                    }
-                benchmark::DoNotOptimize(acc);
-            }, min_time);
-        }
+                    benchmark::DoNotOptimize(acc);
+                }, min_time);
+            }
     const auto ns = run_all();
     md << "## Image-based lighting of glints (glint/ibl.hpp)\n\n";
     std::ostringstream t;

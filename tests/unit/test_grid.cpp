@@ -322,6 +322,11 @@ TEST_CASE("grid: the skip test never changes R: grid_sample equals R from its de
 TEST_CASE("grid: the skip test's AVX2 masks equal the portable loops' bit for bit") {
     const bool avx2 = K::glint_cpu_avx2();
     MESSAGE("AVX2 masks: " << std::string(avx2 ? "compared" : "not compared (a CPU without AVX2, or a build without the AVX2 path): the portable loops against themselves"));
+    auto same_masks = [](const K::glint_draw_masks& a, const K::glint_draw_masks& b) {
+        bool same = a.any == b.any;
+        for (int v = 0; v < 12; ++v) same = same && a.bits[v] == b.bits[v];
+        return same;
+    };
     int pixels = 0, differ = 0, set_bits = 0, clear_bits = 0, wrong_caught = 0;
     for (std::uint32_t i = 0; i < 3000; ++i) {
         const glm::vec2 r1 = random_unit(i, 61), r2 = random_unit(i, 62), r3 = random_unit(i, 63), r4 = random_unit(i, 64);
@@ -346,20 +351,13 @@ TEST_CASE("grid: the skip test's AVX2 masks equal the portable loops' bit for bi
         const bool skip_test = i % 7 != 6;
         const auto fast = K::glint_skip_test_masks(px, key, p, live, skip_test);
         const auto portable = K::glint_skip_test_masks_inline(px, key, p, live, skip_test);
-        bool same = fast.any == portable.any;
-        for (int v = 0; v < 12; ++v) {
-            same = same && fast.bits[v] == portable.bits[v];
-            if (v < px.v.count)
-                for (int j = 0; j < 4; ++j) ((portable.bits[v] >> j) & 1 ? set_bits : clear_bits) += 1;
-        }
-        differ += !same;
+        for (int v = 0; v < px.v.count; ++v)
+            for (int j = 0; j < 4; ++j) ((portable.bits[v] >> j) & 1 ? set_bits : clear_bits) += 1;
+        differ += !same_masks(fast, portable);
         ++pixels;
         float doubled[4] = {p[0], p[1], p[2], p[3]};
         doubled[i % 4] = std::min(1.0f, 2.0f * p[i % 4]);
-        const auto wrong = K::glint_skip_test_masks(px, key, doubled, live, skip_test);
-        bool wrong_same = wrong.any == portable.any;
-        for (int v = 0; v < 12; ++v) wrong_same = wrong_same && wrong.bits[v] == portable.bits[v];
-        wrong_caught += !wrong_same;
+        wrong_caught += !same_masks(K::glint_skip_test_masks(px, key, doubled, live, skip_test), portable);
     }
     MESSAGE(pixels << " pixels, " << differ << " with other masks; vertex-corner bits set " << set_bits << ", clear " << clear_bits
                    << "; pixels where one corner's p doubled changes the masks: " << wrong_caught);

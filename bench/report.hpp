@@ -4,25 +4,43 @@
 
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <functional>
 #include <map>
+#include <set>
 #include <string>
+#include <thread>
 #include <type_traits>
 #include <utility>
 #include <vector>
 
 namespace glint_report {
 
-// CPU time per iteration (ns) of every benchmark run, by name.
+// The benchmarks registered by add_all_cores: timed by the wall clock, not the CPU time.
+inline std::set<std::string>& all_cores_names() {
+    static std::set<std::string> names;
+    return names;
+}
+
+// Time per iteration (ns) of every benchmark run, by name: the CPU time, or for add_all_cores's
+// benchmarks the wall time of one frame on every core.
 class collector : public benchmark::BenchmarkReporter {
 public:
     std::map<std::string, double> ns;
     bool ReportContext(const Context&) override { return true; }
     void ReportRuns(const std::vector<Run>& runs) override {
-        for (const Run& r : runs) ns[r.run_name.function_name] = r.GetAdjustedCPUTime();
+        for (const Run& r : runs) {
+            const std::string& name = r.run_name.function_name;
+            // With T threads Google Benchmark reports the wall time over all T threads' iterations,
+            // each a T-th of a frame: T of them make a frame.
+            ns[name] = all_cores_names().count(name) ? r.GetAdjustedRealTime() * static_cast<double>(r.threads) : r.GetAdjustedCPUTime();
+        }
     }
 };
+
+// The threads that "all cores" frames run on: every hardware thread.
+inline int all_cores() { return static_cast<int>(std::max(1u, std::thread::hardware_concurrency())); }
 
 // Registers `body` (called once per iteration with the iteration index) as a benchmark, inlined
 // into the timing loop: no std::function call per iteration (about 2 ns here, as much as the
@@ -39,6 +57,20 @@ void add_inline(const std::string& name, Body body, double min_time) {
 // As add_inline, through a std::function (for bodies whose call cost does not matter).
 inline void add(const std::string& name, std::function<void(std::size_t)> body, double min_time) {
     add_inline(name, std::move(body), min_time);
+}
+
+// A frame on every core: `rows(first, step, i)` shades the rows first, first + step, ... of frame i;
+// all_cores() threads run it at once, thread t with first = t, step = all_cores(), and the time
+// recorded is a whole frame's wall time (the threads run their frames side by side, without a
+// barrier between frames, as a renderer's frames overlap). The CPU frame targets are on all
+// cores; the report times each frame on one thread too.
+template <class Rows>
+void add_all_cores(const std::string& name, Rows rows, double min_time) {
+    all_cores_names().insert(name);
+    benchmark::RegisterBenchmark(name.c_str(), [rows](benchmark::State& state) {
+        std::size_t i = 0;  // each thread's own count
+        for (auto _ : state) rows(state.thread_index(), state.threads(), i++);
+    })->Threads(all_cores())->UseRealTime()->MinTime(min_time);
 }
 
 // x, as a value the compiler must assume unknown. Not benchmark::DoNotOptimize(x): its "+m,r"

@@ -135,25 +135,32 @@ section grid_section(double min_time) {
     // renderer's smooth path through its glint switch); 4 and 5: glints at ln density 14 with
     // and without the smooth-result gate (where most footprints hold enough microfacets); 6: glints
     // on one lattice point per pixel (scene_options::stochastic_lattice).
-    // Each frame in round_count rounds (report.hpp), the least time of each.
+    // The rows first, first + step, ... of a frame in a mode.
+    auto frame_rows = [&cam, fw, fh](light_type t, int mode, int first, int step) {
+        scene_options opt;
+        opt.smooth = mode == 0 || mode == 3;
+        opt.stochastic_lattice = mode == 6;
+        opt.smooth_tolerance = (mode == 2 || mode == 5) ? 0.0f : 0.01f;
+        if (mode == 4 || mode == 5) opt.log_density = 14.0f;
+        light_setup ls;
+        ls.type = t;
+        shading_counters c;
+        float acc = 0;
+        for (int y = first; y < fh; y += step)
+            for (int x = 0; x < fw; ++x) acc += render_pixel(opt, ls, cam, x, y, c).x;
+        benchmark::DoNotOptimize(acc);
+    };
+    // Each frame in round_count rounds (report.hpp), the least time of each; modes 0 and 1 also on
+    // all cores (add_all_cores).
     for (int round = 0; round < round_count; ++round)
-        for (light_type t : {light_type::point, light_type::sun, light_type::area})
-            for (int mode = 0; mode < 7; ++mode) {
-                add(std::string("frame_") + name(t) + "_" + std::to_string(mode) + round_suffix(round), [t, mode, &cam, fw, fh](std::size_t) {
-                    scene_options opt;
-                    opt.smooth = mode == 0 || mode == 3;
-                    opt.stochastic_lattice = mode == 6;
-                    opt.smooth_tolerance = (mode == 2 || mode == 5) ? 0.0f : 0.01f;
-                    if (mode == 4 || mode == 5) opt.log_density = 14.0f;
-                    light_setup ls;
-                    ls.type = t;
-                    shading_counters c;
-                    float acc = 0;
-                    for (int y = 0; y < fh; ++y)
-                        for (int x = 0; x < fw; ++x) acc += render_pixel(opt, ls, cam, x, y, c).x;
-                    benchmark::DoNotOptimize(acc);
-                }, min_time);
-            }
+        for (light_type t : {light_type::point, light_type::sun, light_type::area}) {
+            for (int mode = 0; mode < 7; ++mode)
+                add(std::string("frame_") + name(t) + "_" + std::to_string(mode) + round_suffix(round),
+                    [frame_rows, t, mode](std::size_t) { frame_rows(t, mode, 0, 1); }, min_time);
+            for (int mode = 0; mode < 2; ++mode)
+                add_all_cores(std::string("frame_all_cores_") + name(t) + "_" + std::to_string(mode) + round_suffix(round),
+                              [frame_rows, t, mode](int first, int step, std::size_t) { frame_rows(t, mode, first, step); }, min_time);
+        }
     // --- several point lights on one footprint -------------------------------------------------
     // Per pixel: k lights shaded smooth, with glints on one shared footprint (grid_pixel), and
     // with glints through a footprint of their own per light (grid_sample for each), and on one
@@ -256,17 +263,24 @@ section grid_section(double min_time) {
           "return the smooth result without drawing); \"all sampled\" turns the gate off; \"off\" switches glints off. At ln "
           "density 14 most footprints hold enough microfacets for the gate: the last columns show the time it saves. \"One lattice "
           "point\" draws one of the footprint's four lattice points per pixel with probability w_L (scene_options::stochastic_lattice, "
-          "glint::grid_pixel_setup with a lattice_u): the same mean and per-pixel variance, 3 vertices instead of up to 12.\n\n"
-       << "| light | smooth ms | glints ms | glints / smooth | one lattice point / smooth | all sampled / smooth | off / smooth | density 14: glints / smooth | density 14: all sampled / smooth |\n|---|---|---|---|---|---|---|---|---|\n";
+          "glint::grid_pixel_setup with a lattice_u): the same mean and per-pixel variance, 3 vertices instead of up to 12. \"All cores\": the smooth "
+          "and the glint frame on "
+       << all_cores() << " threads at once, thread t shading rows t, t + " << all_cores()
+       << ", ..., the wall time of a frame (bench/report.hpp, add_all_cores).\n\n"
+       << "| light | smooth ms | glints ms | glints / smooth | all cores: smooth ms | all cores: glints ms | all cores: glints / smooth | one lattice point / smooth | all sampled / smooth | off / smooth | density 14: glints / smooth | density 14: all sampled / smooth |\n|---|---|---|---|---|---|---|---|---|---|---|---|\n";
     for (light_type t : {light_type::point, light_type::sun, light_type::area}) {
         const double s0 = ns.at(std::string("frame_") + name(t) + "_0"), s1 = ns.at(std::string("frame_") + name(t) + "_1"),
                      s2 = ns.at(std::string("frame_") + name(t) + "_2");
         const double s3 = ns.at(std::string("frame_") + name(t) + "_3"), s4 = ns.at(std::string("frame_") + name(t) + "_4"),
                      s5 = ns.at(std::string("frame_") + name(t) + "_5"), s6 = ns.at(std::string("frame_") + name(t) + "_6");
-        t3 << "| " << name(t) << " | " << fmt(s0 * 1e-6) << " | " << fmt(s1 * 1e-6) << " | " << fmt(s1 / s0) << " | " << fmt(s6 / s0) << " | " << fmt(s2 / s0) << " | "
+        const double a0 = ns.at(std::string("frame_all_cores_") + name(t) + "_0"), a1 = ns.at(std::string("frame_all_cores_") + name(t) + "_1");
+        t3 << "| " << name(t) << " | " << fmt(s0 * 1e-6) << " | " << fmt(s1 * 1e-6) << " | " << fmt(s1 / s0) << " | " << fmt(a0 * 1e-6) << " | "
+           << fmt(a1 * 1e-6) << " | " << fmt(a1 / a0) << " | " << fmt(s6 / s0) << " | " << fmt(s2 / s0) << " | "
            << fmt(s3 / s0) << " | " << fmt(s4 / s0) << " | " << fmt(s5 / s0) << " |\n";
         csv << "frame," << name(t) << " light glints/smooth,float,ratio," << s1 / s0 << "," << s1 << "," << s1 / s0 << ",smooth frame\n";
         csv << "frame," << name(t) << " light glints on one lattice point/smooth,float,ratio," << s6 / s0 << "," << s6 << "," << s6 / s0 << ",smooth frame\n";
+        csv << "frame," << name(t) << " light glints/smooth all cores (" << all_cores() << " threads),float,ratio," << a1 / a0 << "," << a1 << "," << a1 / a0
+            << ",smooth frame on all cores\n";
     }
     t3 << "\n";
     std::ostringstream t5;

@@ -76,42 +76,48 @@ section ibl_section(double min_time) {
     // Shading: per pixel of a 160 x 100 view of the sphere, smooth (mode 0) against glints (1), and
     // glints on one lattice point per pixel (2; glint::grid_pixel_setup with a lattice_u).
     const char* labels[] = {"K=4 linear", "K=4 log", "K=8 linear", "K=8 log"};
-    // Each frame in round_count rounds (report.hpp), the least time of each.
+    // The rows first, first + step, ... of frame `it` (its seed) in a mode.
+    auto frame_rows = [](const glint::environment* env, int mode, int first, int step, std::size_t it) {
+        float acc = 0;
+        const float sa = 0.35f, alpha = sa * sa, dh = env->total_area(alpha);
+        for (int y = first; y < 100; y += step)
+            for (int x = 0; x < 160; ++x) {
+                // A sphere seen from afar: normal from the pixel, view along -z.
+                const float px = (static_cast<float>(x) - 80) / 50, py = (50 - static_cast<float>(y)) / 50, rr = px * px + py * py;
+                if (rr >= 1) continue;
+                const glm::vec3 n(px, py, std::sqrt(1 - rr)), d(0, 0, -1);
+                const float cos_o = n.z;
+                // Smooth shading reads the radiance alone, glints the K indicators too.
+                const glm::vec3 r = glm::reflect(d, n);
+                float m = 1, radiance = 0;
+                if (mode == 0) {
+                    radiance = env->lookup_radiance(r, sa).x;
+                } else {
+                    const auto s = env->lookup(r, sa);
+                    radiance = s.radiance.x;
+                    glint::grid_params<float> g;
+                    g.log_density = 4.0f;
+                    g.seed = static_cast<std::uint32_t>(it);
+                    const glm::vec2 uv(static_cast<float>(x), static_cast<float>(y));
+                    auto pixel = glint::grid_pixel_setup(uv, glm::vec2(1, 0), glm::vec2(0, 1), g, glint_examples::pixel_lattice_u(mode == 2, x, y, g.seed));
+                    const auto est = glint::ibl_sample(pixel, g, env->levels(), s.indicators, env->visible_area(cos_o, sa), dh);
+                    m = glint::modulation(est);
+                }
+                acc += env->albedo(cos_o, sa) * radiance * m;
+            }
+        benchmark::DoNotOptimize(acc);
+    };
+    // Each frame in round_count rounds (report.hpp), the least time of each; the linear knob's
+    // smooth and glint frames also on all cores (add_all_cores).
     for (int round = 0; round < round_count; ++round)
         for (std::size_t e = 0; e < envs.size(); ++e)
             for (int mode = 0; mode < 3; ++mode) {
                 const glint::environment* env = envs[e].get();
-                add("ibl_" + std::to_string(e) + "_" + std::to_string(mode) + round_suffix(round), [env, mode](std::size_t it) {
-                    float acc = 0;
-                    const float sa = 0.35f, alpha = sa * sa, dh = env->total_area(alpha);
-                    for (int y = 0; y < 100; ++y)
-                        for (int x = 0; x < 160; ++x) {
-                            // A sphere seen from afar: normal from the pixel, view along -z.
-                            const float px = (static_cast<float>(x) - 80) / 50, py = (50 - static_cast<float>(y)) / 50, rr = px * px + py * py;
-                            if (rr >= 1) continue;
-                            const glm::vec3 n(px, py, std::sqrt(1 - rr)), d(0, 0, -1);
-                            const float cos_o = n.z;
-                            // Smooth shading reads the radiance alone, glints the K indicators too.
-                            const glm::vec3 r = glm::reflect(d, n);
-                            float m = 1, radiance = 0;
-                            if (mode == 0) {
-                                radiance = env->lookup_radiance(r, sa).x;
-                            } else {
-                                const auto s = env->lookup(r, sa);
-                                radiance = s.radiance.x;
-                                glint::grid_params<float> g;
-                                g.log_density = 4.0f;
-                                g.seed = static_cast<std::uint32_t>(it);
-                                const glm::vec2 uv(static_cast<float>(x), static_cast<float>(y));
-                                auto pixel = glint::grid_pixel_setup(uv, glm::vec2(1, 0), glm::vec2(0, 1), g,
-                                                                     glint_examples::pixel_lattice_u(mode == 2, x, y, g.seed));
-                                const auto est = glint::ibl_sample(pixel, g, env->levels(), s.indicators, env->visible_area(cos_o, sa), dh);
-                                m = glint::modulation(est);
-                            }
-                            acc += env->albedo(cos_o, sa) * radiance * m;
-                        }
-                    benchmark::DoNotOptimize(acc);
-                }, min_time);
+                add("ibl_" + std::to_string(e) + "_" + std::to_string(mode) + round_suffix(round),
+                    [frame_rows, env, mode](std::size_t it) { frame_rows(env, mode, 0, 1, it); }, min_time);
+                if (e % 2 == 0 && mode < 2)
+                    add_all_cores("ibl_all_cores_" + std::to_string(e) + "_" + std::to_string(mode) + round_suffix(round),
+                                  [frame_rows, env, mode](int first, int step, std::size_t it) { frame_rows(env, mode, first, step, it); }, min_time);
             }
     const auto ns = run_all();
     md << "## Image-based lighting of glints (glint/ibl.hpp)\n\n";
@@ -120,17 +126,27 @@ section ibl_section(double min_time) {
       << "one thread. Shading: a sphere of radius 50 pixels in a 160 x 100 view (7825 pixels), smooth split-sum IBL against glints (ln density "
          "4); each frame the least time of "
       << round_count << " rounds, the frames interleaved:\n\n"
-      << "| knob | prefilter s | smooth us/frame | glints us/frame | glints / smooth | one lattice point / smooth |\n|---|---|---|---|---|---|\n";
+      << "| knob | prefilter s | smooth us/frame | glints us/frame | glints / smooth | one lattice point / smooth | all cores: smooth us/frame | all cores: glints us/frame | all cores: glints / smooth |\n|---|---|---|---|---|---|---|---|---|\n";
     for (std::size_t e = 0; e < envs.size(); ++e) {
         const double s0 = ns.at("ibl_" + std::to_string(e) + "_0"), s1 = ns.at("ibl_" + std::to_string(e) + "_1"),
                      s2 = ns.at("ibl_" + std::to_string(e) + "_2");
         t << "| " << labels[e] << " | " << fmt(build_s[e]) << " | " << fmt(s0 * 1e-3, "%.0f") << " | " << fmt(s1 * 1e-3, "%.0f") << " | " << fmt(s1 / s0)
-          << " | " << fmt(s2 / s0) << " |\n";
+          << " | " << fmt(s2 / s0) << " | ";
+        if (e % 2 == 0) {
+            const double a0 = ns.at("ibl_all_cores_" + std::to_string(e) + "_0"), a1 = ns.at("ibl_all_cores_" + std::to_string(e) + "_1");
+            t << fmt(a0 * 1e-3, "%.0f") << " | " << fmt(a1 * 1e-3, "%.0f") << " | " << fmt(a1 / a0) << " |\n";
+            csv << "ibl," << labels[e] << " all cores (" << all_cores() << " threads),float,glints/smooth frame time," << a1 / a0 << "," << a1 << "," << a1 / a0
+                << ",smooth IBL frame on all cores\n";
+        } else {
+            t << "- | - | - |\n";
+        }
         csv << "ibl," << labels[e] << ",float,glints/smooth frame time," << s1 / s0 << "," << s1 << "," << s1 / s0 << ",smooth IBL frame\n";
         csv << "ibl," << labels[e] << " one lattice point,float,glints/smooth frame time," << s2 / s0 << "," << s2 << "," << s2 / s0 << ",smooth IBL frame\n";
     }
     t << "\n\"One lattice point\": glint::grid_pixel_setup with a lattice_u per pixel (one of the footprint's four lattice points, drawn "
-         "with probability w_L; the same mean and per-pixel variance; docs/grid.md).\n";
+         "with probability w_L; the same mean and per-pixel variance; docs/grid.md). \"All cores\" (the linear knob): the smooth and the "
+         "glint frame on " << all_cores() << " threads at once, thread t shading rows t, t + " << all_cores() << ", ..., the wall time of a frame "
+         "(bench/report.hpp, add_all_cores).\n";
     t << "\nTable resolution: E_rho and E_D at T x T entries (bilinear in (sqrt(cos theta_o), sqrt alpha)), worst relative error "
          "at 576 points off the tables' grid (cos theta_o in [0.02, 0.98], sqrt(alpha) in [0.05, 1]) against E_D exact and E_rho by "
          "16384 Hammersley VNDF samples (the tables' entries use 1024); the lookup costs the same at every size; time to build both "

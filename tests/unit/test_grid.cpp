@@ -534,3 +534,55 @@ TEST_CASE("grid: one lattice point per pixel is picked with probability w_L, dra
     CHECK(worst_share <= 1.0 / m + 1e-6);
     CHECK(differ == 0);
 }
+
+namespace {
+
+// glint_lattice_triangles_x4 (C++: the four lattice points in vector lanes) against the scalar
+// path GLSL runs, glint_lattice_rotation and glint_triangle_grid one lattice point at a time, over
+// footprints of every LOD, ratio and angle at uv of magnitudes 1e-3 to 1e6, both signs.
+// Returns the lattice points compared and the number that differ in a vertex, weight or key;
+// `skew` moves the scalar path's uv by one unit in the last place (a wrong variant the comparison
+// must catch).
+template <class real>
+std::pair<long, long> lattice_triangles_mismatches(bool skew) {
+    using KR = glint::detail::glsl::kernels<real>;
+    long points = 0, differ = 0;
+    for (std::uint32_t i = 0; i < 20000; ++i) {
+        const glm::vec2 r1 = random_unit(i, 81), r2 = random_unit(i, 82), r3 = random_unit(i, 83);
+        glm::vec2 dx, dy;
+        footprint(std::pow(2.0f, -20.0f + 40.0f * r1.x), 1.0f + 20.0f * r1.y, 3.14159265f * r2.x, dx, dy);
+        const auto f = KR::glint_footprint_from_derivatives(glm::vec<2, real>(dx), glm::vec<2, real>(dy));
+        const auto lat = KR::glint_footprint_lattice(f, real(1.5));
+        const real scale = std::pow(real(10), real(-3) + real(9) * real(r2.y));
+        const glm::vec<2, real> uv(scale * (real(2) * real(r3.x) - 1), scale * (real(2) * real(r3.y) - 1));
+        const std::uint32_t seed = i * 2654435761u;
+        const auto tris = KR::glint_lattice_triangles_x4(uv, lat, seed);
+        for (int l = 0; l < 4; ++l) {
+            const glm::vec<2, real> at = skew ? glm::vec<2, real>(std::nextafter(uv.x, real(1e30)), uv.y) : uv;
+            const glm::vec<2, real> rot = KR::glint_lattice_rotation(lat.level[l], lat.bin[l]);
+            const glm::vec<2, real> r(rot.x * at.x + rot.y * at.y, -rot.y * at.x + rot.x * at.y);
+            const auto tri = KR::glint_triangle_grid(glm::vec<2, real>(r.x * KR::glint_exp2_int(-lat.lod[l] - lat.level[l]), r.y * KR::glint_exp2_int(-lat.lod[l])));
+            const std::uint32_t key = (static_cast<std::uint32_t>(lat.lod[l] + 64) | (static_cast<std::uint32_t>(lat.level[l]) << 8u) |
+                                       (static_cast<std::uint32_t>(lat.bin[l]) << 12u)) ^ seed;
+            bool same = tris.key[l] == key;
+            for (int t = 0; t < 3; ++t)
+                same = same && tris.vx[t][l] == tri.vertex[t].x && tris.vy[t][l] == tri.vertex[t].y && tris.weight[t][l] == tri.weight[t];
+            differ += !same;
+            ++points;
+        }
+    }
+    return {points, differ};
+}
+
+}  // namespace
+
+TEST_CASE("the four lattice points' triangles at once (C++) equal the scalar rotation and triangle grid bit for bit, in float and double") {
+    const auto f = lattice_triangles_mismatches<float>(false), d = lattice_triangles_mismatches<double>(false);
+    const auto f_skew = lattice_triangles_mismatches<float>(true), d_skew = lattice_triangles_mismatches<double>(true);
+    MESSAGE("float: " << f.first << " lattice points, " << f.second << " differ; double: " << d.first << ", " << d.second
+                      << "; with the scalar path's u one ulp off: " << f_skew.second << " and " << d_skew.second << " differ");
+    CHECK(f.second == 0);
+    CHECK(d.second == 0);
+    CHECK(f_skew.second > 1000);
+    CHECK(d_skew.second > 1000);
+}

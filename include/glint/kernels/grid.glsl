@@ -186,6 +186,75 @@ GLINT_FN glint_triangle glint_triangle_grid(vec2 q) {
     return t;
 }
 
+#if !defined(GLINT_GLSL)
+// C++ only: glint_lattice_rotation and glint_triangle_grid for the four lattice points at once, in
+// four lanes of GCC's vector extension (SSE2 registers for float, the x86-64 baseline): the same
+// operations in the same order, so the same bits (tests/unit/test_grid.cpp). The rotations come
+// from a table of glint_lattice_rotation's 32 values. One lattice point at a time, the floors'
+// branches and the rotation's switch (a coin toss per lattice point) took about a third of
+// glint_footprint_vertices' time (perf, glint_frame_loop point).
+struct glint_lattice_triangles {
+    int vx[3][4];     // vertex t of lattice point l: (vx[t][l], vy[t][l])
+    int vy[3][4];
+    real weight[3][4];
+    uint key[4];      // the lattice point's key (its lod, level and bin, and the seed)
+};
+
+GLINT_FN_INLINE const vec2* glint_lattice_rotation_table() {
+    static const struct table {
+        vec2 r[32];
+        table() {
+            for (int k = 0; k < 32; ++k) r[k] = glint_lattice_rotation(GLINT_MAX_RATIO_LEVEL, k);
+        }
+    } t;
+    return t.r;
+}
+
+GLINT_FN_INLINE glint_lattice_triangles glint_lattice_triangles_x4(vec2 uv, glint_lattice lat, uint seed) {
+    typedef real realx4 __attribute__((vector_size(4 * sizeof(real))));
+    typedef int intx4 __attribute__((vector_size(16)));
+    const vec2* table = glint_lattice_rotation_table();
+    // The vectors built from scalars in registers (brace initialisers), not lane by lane in memory:
+    // a vector load of four words just stored one by one waits for the stores (perf: a sixth of
+    // the function's time on that load).
+    const intx4 lod = {lat.lod[0], lat.lod[1], lat.lod[2], lat.lod[3]};
+    const intx4 level = {lat.level[0], lat.level[1], lat.level[2], lat.level[3]};
+    const intx4 bin = {lat.bin[0], lat.bin[1], lat.bin[2], lat.bin[3]};
+    const vec2 r0 = table[(lat.bin[0] << (GLINT_MAX_RATIO_LEVEL - lat.level[0])) & 31], r1 = table[(lat.bin[1] << (GLINT_MAX_RATIO_LEVEL - lat.level[1])) & 31],
+               r2 = table[(lat.bin[2] << (GLINT_MAX_RATIO_LEVEL - lat.level[2])) & 31], r3 = table[(lat.bin[3] << (GLINT_MAX_RATIO_LEVEL - lat.level[3])) & 31];
+    const realx4 c = {r0.x, r1.x, r2.x, r3.x}, s = {r0.y, r1.y, r2.y, r3.y};
+    // glint_exp2_int, lane-wise: the floats whose exponent fields are n + 127.
+    typedef float floatx4 __attribute__((vector_size(16)));
+    const realx4 scale_x = __builtin_convertvector(reinterpret_cast<floatx4>((-lod - level + 127) << 23), realx4);
+    const realx4 scale_y = __builtin_convertvector(reinterpret_cast<floatx4>((-lod + 127) << 23), realx4);
+    // glint_footprint_vertices' rotation and scaling, then glint_triangle_grid, lane by lane.
+    realx4 qx = (c * uv.x + s * uv.y) * scale_x;
+    realx4 qy = (-s * uv.x + c * uv.y) * scale_y;
+    realx4 sx = qx - qy * real(0.577350269189625764509), sy = qy * real(1.15470053837925152902);
+    const realx4 lo = realx4{} + real(-1073741824), hi = realx4{} + real(1073741824);
+    sx = (sx < lo) ? lo : sx, sy = (sy < lo) ? lo : sy;  // GLM's clamp: max, then min
+    sx = (hi < sx) ? hi : sx, sy = (hi < sy) ? hi : sy;
+    const intx4 tx = __builtin_convertvector(sx, intx4), ty = __builtin_convertvector(sy, intx4);  // glint_floor_bounded
+    realx4 ix = __builtin_convertvector(tx, realx4), iy = __builtin_convertvector(ty, realx4);
+    ix = (ix > sx) ? ix - real(1) : ix, iy = (iy > sy) ? iy - real(1) : iy;
+    const realx4 fx = sx - ix, fy = sy - iy;
+    const intx4 bx = __builtin_convertvector(ix, intx4), by = __builtin_convertvector(iy, intx4);
+    const intx4 u = __builtin_convertvector(!(fx + fy < real(1)), intx4) & 1;  // upper triangle
+    const realx4 uf = __builtin_convertvector(u, realx4);
+    const realx4 w0 = real(1) - fx - fy, w1 = uf - fx, w2 = uf - fy;
+    glint_lattice_triangles o;
+    const intx4 key = (lod + 64) | (level << 8) | (bin << 12);
+    for (int l = 0; l < 4; ++l) {
+        o.vx[0][l] = bx[l] + u[l], o.vy[0][l] = by[l] + u[l];
+        o.vx[1][l] = bx[l] + 1 - u[l], o.vy[1][l] = by[l] + u[l];
+        o.vx[2][l] = bx[l] + u[l], o.vy[2][l] = by[l] + 1 - u[l];
+        o.weight[0][l] = glint_abs(w0[l]), o.weight[1][l] = glint_abs(w1[l]), o.weight[2][l] = glint_abs(w2[l]);
+        o.key[l] = uint(key[l]) ^ seed;
+    }
+    return o;
+}
+#endif
+
 // The material's glint parameters.
 struct glint_grid_params {
     real log_density;       // ln of the expected microfacets per unit uv area
@@ -282,6 +351,9 @@ GLINT_FN glint_grid_vertices glint_footprint_vertices(vec2 uv, glint_footprint f
     }
     glint_lattice lat = glint_footprint_lattice(f, g.lod_scale);
     int chosen = (lattice_u >= real(0)) ? glint_lattice_choice(lat, lattice_u) : -1;
+#if !defined(GLINT_GLSL)
+    glint_lattice_triangles tris = glint_lattice_triangles_x4(uv, lat, g.seed);
+#endif
     for (int l = 0; l < 4; ++l) {
         real wl = lat.weight[l];
         if (!(wl > real(0))) continue;
@@ -289,6 +361,7 @@ GLINT_FN glint_grid_vertices glint_footprint_vertices(vec2 uv, glint_footprint f
             if (l != chosen) continue;
             wl = real(1);
         }
+#if defined(GLINT_GLSL)
         vec2 rot = glint_lattice_rotation(lat.level[l], lat.bin[l]);
         vec2 r = vec2(rot.x * uv.x + rot.y * uv.y, -rot.y * uv.x + rot.x * uv.y);
         // Cells 2^lod by 2^(lod + level): exact power-of-two scalings.
@@ -302,6 +375,16 @@ GLINT_FN glint_grid_vertices glint_footprint_vertices(vec2 uv, glint_footprint f
             v.hash[v.count] = uvec3(uint(tri.vertex[t].x), uint(tri.vertex[t].y), lattice_key);  // hashed below
             ++v.count;
         }
+#else
+        for (int t = 0; t < 3; ++t) {
+            real wt = tris.weight[t][l];
+            if (!(wt > real(0))) continue;
+            v.weight[v.count] = wt;
+            v.share[v.count] = wl;
+            v.hash[v.count] = uvec3(uint(tris.vx[t][l]), uint(tris.vy[t][l]), tris.key[l]);  // hashed below
+            ++v.count;
+        }
+#endif
     }
     // Each vertex's hash: PCG3D of its cell and lattice key. C++ hashes the pixel's vertices
     // together, eight at a time in AVX2 registers where the CPU has them (glint_pcg3d_many, the

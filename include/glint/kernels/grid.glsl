@@ -190,9 +190,9 @@ GLINT_FN glint_triangle glint_triangle_grid(vec2 q) {
 // C++ only: glint_lattice_rotation and glint_triangle_grid for the four lattice points at once, in
 // four lanes of GCC's vector extension (SSE2 registers for float, the x86-64 baseline): the same
 // operations in the same order, so the same bits (tests/unit/test_grid.cpp). The rotations come
-// from a table of glint_lattice_rotation's 32 values. One lattice point at a time, the floors'
-// branches and the rotation's switch (a coin toss per lattice point) took about a third of
-// glint_footprint_vertices' time (perf, glint_frame_loop point).
+// from a table of glint_lattice_rotation's 32 values. One lattice point at a time, the floors
+// alone (a branch each, its direction a coin toss) drew 15% of glint_footprint_vertices' perf
+// samples in glint_frame_loop point; in lanes the point frame took 4% less time (DEVELOPERS.md).
 struct glint_lattice_triangles {
     int vx[3][4];     // vertex t of lattice point l: (vx[t][l], vy[t][l])
     int vy[3][4];

@@ -62,8 +62,8 @@ inline void add(const std::string& name, std::function<void(std::size_t)> body, 
 // A frame on every core: `rows(first, step, i)` shades the rows first, first + step, ... of frame i;
 // all_cores() threads run it at once, thread t with first = t, step = all_cores(), and the time
 // recorded is a whole frame's wall time (the threads run their frames side by side, without a
-// barrier between frames, as a renderer's frames overlap). The CPU frame targets are on all
-// cores; the report times each frame on one thread too.
+// barrier between frames, as a renderer's frames overlap). The CPU frame targets (README) are for
+// all cores; the report times each frame on one thread too.
 template <class Rows>
 void add_all_cores(const std::string& name, Rows rows, double min_time) {
     all_cores_names().insert(name);

@@ -1,7 +1,8 @@
 // The grid's deterministic properties: lattice weights (non-negative, sum 1, continuous across
 // every kind of lattice boundary), triangle-grid barycentrics (linear precision, hence
 // continuity), determinism, continuity of R as the footprint moves, the smooth-result gate and
-// its bound, point-light expectations, and hard inputs.
+// its bound, point-light expectations, hard inputs, and C++'s vector paths against the scalar
+// ones GLSL runs (the skip test's AVX2 masks, the four lattice points' lanes).
 #include <doctest/doctest.h>
 
 #include <algorithm>

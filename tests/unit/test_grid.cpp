@@ -558,8 +558,8 @@ std::pair<long, long> lattice_triangles_mismatches(bool skew) {
         const glm::vec<2, real> uv(scale * (real(2) * real(r3.x) - 1), scale * (real(2) * real(r3.y) - 1));
         const std::uint32_t seed = i * 2654435761u;
         const auto tris = KR::glint_lattice_triangles_x4(uv, lat, seed);
+        const glm::vec<2, real> at = skew ? glm::vec<2, real>(std::nextafter(uv.x, real(1e30)), uv.y) : uv;
         for (int l = 0; l < 4; ++l) {
-            const glm::vec<2, real> at = skew ? glm::vec<2, real>(std::nextafter(uv.x, real(1e30)), uv.y) : uv;
             const glm::vec<2, real> rot = KR::glint_lattice_rotation(lat.level[l], lat.bin[l]);
             const glm::vec<2, real> r(rot.x * at.x + rot.y * at.y, -rot.y * at.x + rot.x * at.y);
             const auto tri = KR::glint_triangle_grid(glm::vec<2, real>(r.x * KR::glint_exp2_int(-lat.lod[l] - lat.level[l]), r.y * KR::glint_exp2_int(-lat.lod[l])));

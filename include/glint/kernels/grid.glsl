@@ -186,6 +186,11 @@ GLINT_FN glint_triangle glint_triangle_grid(vec2 q) {
     return t;
 }
 
+// The key that seeds a lattice point's vertex hashes: its lod, level and bin, and the material's seed.
+GLINT_FN uint glint_lattice_key(int lod, int level, int bin, uint seed) {
+    return (uint(lod + 64) | (uint(level) << 8u) | (uint(bin) << 12u)) ^ seed;
+}
+
 #if !defined(GLINT_GLSL)
 // C++ only: glint_lattice_rotation and glint_triangle_grid for the four lattice points at once, in
 // four lanes of GCC's vector extension (SSE2 registers for float, the x86-64 baseline): the same
@@ -219,7 +224,6 @@ GLINT_FN_INLINE glint_lattice_triangles glint_lattice_triangles_x4(vec2 uv, glin
     // glint_footprint_vertices' samples on that load).
     const intx4 lod = {lat.lod[0], lat.lod[1], lat.lod[2], lat.lod[3]};
     const intx4 level = {lat.level[0], lat.level[1], lat.level[2], lat.level[3]};
-    const intx4 bin = {lat.bin[0], lat.bin[1], lat.bin[2], lat.bin[3]};
     const vec2 r0 = table[(lat.bin[0] << (GLINT_MAX_RATIO_LEVEL - lat.level[0])) & 31], r1 = table[(lat.bin[1] << (GLINT_MAX_RATIO_LEVEL - lat.level[1])) & 31],
                r2 = table[(lat.bin[2] << (GLINT_MAX_RATIO_LEVEL - lat.level[2])) & 31], r3 = table[(lat.bin[3] << (GLINT_MAX_RATIO_LEVEL - lat.level[3])) & 31];
     const realx4 c = {r0.x, r1.x, r2.x, r3.x}, s = {r0.y, r1.y, r2.y, r3.y};
@@ -243,13 +247,12 @@ GLINT_FN_INLINE glint_lattice_triangles glint_lattice_triangles_x4(vec2 uv, glin
     const realx4 uf = __builtin_convertvector(u, realx4);
     const realx4 w0 = real(1) - fx - fy, w1 = uf - fx, w2 = uf - fy;
     glint_lattice_triangles o;
-    const intx4 key = (lod + 64) | (level << 8) | (bin << 12);
     for (int l = 0; l < 4; ++l) {
         o.vx[0][l] = bx[l] + u[l], o.vy[0][l] = by[l] + u[l];
         o.vx[1][l] = bx[l] + 1 - u[l], o.vy[1][l] = by[l] + u[l];
         o.vx[2][l] = bx[l] + u[l], o.vy[2][l] = by[l] + 1 - u[l];
         o.weight[0][l] = glint_abs(w0[l]), o.weight[1][l] = glint_abs(w1[l]), o.weight[2][l] = glint_abs(w2[l]);
-        o.key[l] = uint(key[l]) ^ seed;
+        o.key[l] = glint_lattice_key(lat.lod[l], lat.level[l], lat.bin[l], seed);
     }
     return o;
 }
@@ -366,7 +369,7 @@ GLINT_FN glint_grid_vertices glint_footprint_vertices(vec2 uv, glint_footprint f
         vec2 r = vec2(rot.x * uv.x + rot.y * uv.y, -rot.y * uv.x + rot.x * uv.y);
         // Cells 2^lod by 2^(lod + level): exact power-of-two scalings.
         glint_triangle tri = glint_triangle_grid(vec2(r.x * glint_exp2_int(-lat.lod[l] - lat.level[l]), r.y * glint_exp2_int(-lat.lod[l])));
-        uint lattice_key = (uint(lat.lod[l] + 64) | (uint(lat.level[l]) << 8u) | (uint(lat.bin[l]) << 12u)) ^ g.seed;
+        uint lattice_key = glint_lattice_key(lat.lod[l], lat.level[l], lat.bin[l], g.seed);
         for (int t = 0; t < 3; ++t) {
             real wt = tri.weight[t];
             if (!(wt > real(0))) continue;

@@ -41,6 +41,13 @@ constexpr knob knobs[] = {
     {binomial_variant::unbiased, pow_method::log1p, "mean-preserving (glint), log1p"},
 };
 constexpr std::size_t knob_count = sizeof(knobs) / sizeof(knobs[0]);
+// The pair whose per-point ratio is the sampler's time target (KK25 Alg. 1 as published, Eq. 25, and
+// the mean-preserving sampler, log1p) and std::binomial_distribution, the speed-up target's
+// reference, are timed in round_count rounds spread over the section's run, each point's time the
+// least of its rounds; the other knobs once. Timed once, the worst point's ratio went from 2.09x to
+// 2.97x between runs of one build (2026-12-05, seventh session), always where both samplers take
+// 2 to 6 ns: a slow phase of this shared machine falling on one of the two decided it.
+constexpr std::size_t timed_knob_dual = 5, timed_knob_unbiased = 8;
 
 const char* method_name(pow_method m) {
     return m == pow_method::naive ? "naive" : (m == pow_method::kk25 ? "kk25" : "log1p");
@@ -119,18 +126,37 @@ std::string svg_plot(const std::vector<std::string>& labels, const std::vector<d
 
 }  // namespace
 
-// Registers the timing of knob K at grid point i.
+// Registers the timing of knob K at grid point i (as round `round` of round_count where given:
+// run_all keeps the least time over the rounds).
 template <std::size_t K, class Key>
-void add_knob(const Key& key, std::size_t i, float N, float p, const std::vector<float>& u, double per_point) {
-    add_inline(key("knob" + std::to_string(K), i), [=](std::size_t j) {
+void add_knob(const Key& key, std::size_t i, float N, float p, const std::vector<float>& u, double per_point, int round = -1) {
+    add_inline(key("knob" + std::to_string(K), i) + (round >= 0 ? round_suffix(round) : std::string()), [=](std::size_t j) {
         auto r = glint::binomial(knobs[K].variant, launder(N), launder(p), u[j & 1023], u[(j * 7 + 3) & 1023], knobs[K].method);
+        benchmark::DoNotOptimize(r);
+    }, per_point);
+}
+
+// Registers std::binomial_distribution at grid point i as round `round`: constructed per sample (as
+// a per-pixel N and p would need) and constructed once per (N, p), outside the loop (its draw alone).
+template <class Key>
+void add_std(const Key& key, std::size_t i, double N, double p, double per_point, int round) {
+    auto engine = std::make_shared<std::mt19937_64>(12345);
+    add_inline(key("std", i) + round_suffix(round), [=](std::size_t) {
+        std::binomial_distribution<long long> d(static_cast<long long>(launder(N)), launder(p));
+        auto r = d(*engine);
+        benchmark::DoNotOptimize(r);
+    }, per_point);
+    auto once = std::make_shared<std::binomial_distribution<long long>>(static_cast<long long>(N), p);
+    auto engine_once = std::make_shared<std::mt19937_64>(12345);
+    add_inline(key("std_once", i) + round_suffix(round), [=](std::size_t) {
+        auto r = (*once)(*engine_once);
         benchmark::DoNotOptimize(r);
     }, per_point);
 }
 
 template <class Key, std::size_t... K>
 void add_knobs(const Key& key, std::size_t i, float N, float p, const std::vector<float>& u, double per_point, std::index_sequence<K...>) {
-    (add_knob<K>(key, i, N, p, u, per_point), ...);
+    (((K == timed_knob_dual || K == timed_knob_unbiased) ? void() : add_knob<K>(key, i, N, p, u, per_point)), ...);
 }
 
 section binomial_section(double min_time) {
@@ -149,6 +175,8 @@ section binomial_section(double min_time) {
         // add its branches to every knob's time (1.2 to 1.6 ns per sample in the median over the grid
         // for the dual-gated and mean-preserving samplers, measured by this report at 716d827).
         add_knobs(key, i, N, p, u, per_point, std::make_index_sequence<knob_count>());
+        add_knob<timed_knob_dual>(key, i, N, p, u, per_point, 0);  // round 0; the others below
+        add_knob<timed_knob_unbiased>(key, i, N, p, u, per_point, 0);
         const double Nd = points[i].N, pd = points[i].p;
         add_inline(key("unbiased_double", i), [=](std::size_t j) {
             auto r = glint::binomial_unbiased(launder(Nd), launder(pd), ud[j & 1023], ud[(j * 7 + 3) & 1023]);
@@ -158,20 +186,7 @@ section binomial_section(double min_time) {
             auto r = glint::binomial_dual_gated(launder(Nd), launder(pd), ud[j & 1023], ud[(j * 7 + 3) & 1023]);
             benchmark::DoNotOptimize(r);
         }, per_point);
-        // std::binomial_distribution, constructed per sample as a per-pixel N and p would need.
-        auto engine = std::make_shared<std::mt19937_64>(12345);
-        add_inline(key("std", i), [=](std::size_t) {
-            std::binomial_distribution<long long> d(static_cast<long long>(launder(Nd)), launder(pd));
-            auto r = d(*engine);
-            benchmark::DoNotOptimize(r);
-        }, per_point);
-        // std::binomial_distribution constructed once per (N, p), outside the loop: only its draw.
-        auto once = std::make_shared<std::binomial_distribution<long long>>(static_cast<long long>(Nd), pd);
-        auto engine_once = std::make_shared<std::mt19937_64>(12345);
-        add_inline(key("std_once", i), [=](std::size_t) {
-            auto r = (*once)(*engine_once);
-            benchmark::DoNotOptimize(r);
-        }, per_point);
+        add_std(key, i, Nd, pd, per_point, 0);
         for (int K : {2, 4, 8}) {
             add_inline(key("multinomial" + std::to_string(K), i), [=](std::size_t j) {
                 const auto s = static_cast<std::uint32_t>(j);
@@ -197,8 +212,21 @@ section binomial_section(double min_time) {
     const std::vector<grid_point> between = between_grid();
     for (std::size_t i = 0; i < between.size(); ++i) {
         const float N = static_cast<float>(between[i].N), p = static_cast<float>(between[i].p);
-        add_knob<5>(key_between, i, N, p, u, per_point);
-        add_knob<8>(key_between, i, N, p, u, per_point);
+        add_knob<timed_knob_dual>(key_between, i, N, p, u, per_point, 0);
+        add_knob<timed_knob_unbiased>(key_between, i, N, p, u, per_point, 0);
+    }
+    for (int r = 1; r < round_count; ++r) {
+        for (std::size_t i = 0; i < points.size(); ++i) {
+            const float N = static_cast<float>(points[i].N), p = static_cast<float>(points[i].p);
+            add_knob<timed_knob_dual>(key, i, N, p, u, per_point, r);
+            add_knob<timed_knob_unbiased>(key, i, N, p, u, per_point, r);
+            add_std(key, i, points[i].N, points[i].p, per_point, r);
+        }
+        for (std::size_t i = 0; i < between.size(); ++i) {
+            const float N = static_cast<float>(between[i].N), p = static_cast<float>(between[i].p);
+            add_knob<timed_knob_dual>(key_between, i, N, p, u, per_point, r);
+            add_knob<timed_knob_unbiased>(key_between, i, N, p, u, per_point, r);
+        }
     }
     const std::map<std::string, double> ns = run_all();
     auto series = [&](const std::string& name) {
@@ -246,7 +274,7 @@ section binomial_section(double min_time) {
     std::vector<double> plot_ns, plot_bias, plot_w1;
     double median_dual = 0, median_unbiased = 0;
     std::vector<double> unbiased_over_dual, std_once_speedup, std_speedup_unbiased;
-    const auto t_dual = series("knob5"), t_unbiased = series("knob8"), t_std_once = series("std_once");
+    const auto t_dual = series("knob" + std::to_string(timed_knob_dual)), t_unbiased = series("knob" + std::to_string(timed_knob_unbiased)), t_std_once = series("std_once");
     double worst_ratio = 0;
     grid_point worst_at{0, 0};
     for (std::size_t i = 0; i < points.size(); ++i) {
@@ -263,8 +291,8 @@ section binomial_section(double min_time) {
             if (points[i].N * points[i].p * (1 - points[i].p) >= 1) speedup_busy.push_back(t_std[i] / t[i]);
         }
         const double med = median(t), med_speedup = median(speedup);
-        if (k == 5) median_dual = med;
-        if (k == 8) median_unbiased = med;
+        if (k == timed_knob_dual) median_dual = med;
+        if (k == timed_knob_unbiased) median_unbiased = med;
         md << "| " << knobs[k].label << " | " << fmt(w[k].mean_bias) << " | (" << fmt(w[k].at_mean.N) << ", " << fmt(w[k].at_mean.p) << ") | "
            << fmt(w[k].float_mean_bias) << " | " << fmt(w[k].variance) << " | " << fmt(w[k].p0) << " | " << fmt(w[k].w1) << " | "
            << fmt(w[k].ks) << " | " << fmt(med, "%.1f") << " | " << fmt(med_speedup, "%.2f") << " | " << fmt(median(speedup_busy), "%.2f") << " |\n";
@@ -306,7 +334,7 @@ section binomial_section(double min_time) {
     // to KK25 Alg. 1 as published (Eq. 25) and to std::binomial_distribution both ways.
     std::ostringstream ratios;
     ratios << "Per-point time ratios, mean-preserving (log1p, float) / KK25 Alg. 1 (Eq. 25, float): median "
-           << fmt(median(unbiased_over_dual), "%.2f") << ", worst " << fmt(worst_ratio, "%.2f") << " at (N, p) = (" << fmt(worst_at.N) << ", "
+           << fmt(median(unbiased_over_dual), "%.3f") << ", worst " << fmt(worst_ratio, "%.2f") << " at (N, p) = (" << fmt(worst_at.N) << ", "
            << fmt(worst_at.p) << "). Median speed-up over std::binomial_distribution constructed per sample: "
            << fmt(median(std_speedup_unbiased), "%.2f") << "; constructed once per (N, p), its draw alone: " << fmt(median(std_once_speedup), "%.2f")
            << " (std's draw at " << fmt(median(t_std_once), "%.1f") << " ns median).\n";
@@ -316,7 +344,8 @@ section binomial_section(double min_time) {
     std::ostringstream between_csv;
     between_csv << "N,p,dual_gated_kk25,unbiased_log1p,ratio\n";
     for (std::size_t i = 0; i < between.size(); ++i) {
-        const double a = ns.at(key_between("knob5", i)), b = ns.at(key_between("knob8", i));
+        const double a = ns.at(key_between("knob" + std::to_string(timed_knob_dual), i)),
+                     b = ns.at(key_between("knob" + std::to_string(timed_knob_unbiased), i));
         between_csv << between[i].N << ',' << between[i].p << ',' << fmt(a) << ',' << fmt(b) << ',' << fmt(b / a, "%.2f") << '\n';
         if (b / a > worst_between) worst_between = b / a, worst_between_at = between[i];
         above_two += (b / a > 2) ? 1 : 0;
@@ -325,7 +354,10 @@ section binomial_section(double min_time) {
            << fmt(worst_between, "%.2f") << " at (" << fmt(worst_between_at.N) << ", " << fmt(worst_between_at.p) << "), "
            << above_two << " of " << between.size() << " points above 2 (`binomial_between_grid_times.csv`).\n";
     std::ostringstream text;
-    text << "\n## Binomial sampling: accuracy versus time (float kernels, 323-point grid, CPU time, one run)\n\n" << md.str()
+    text << "\n## Binomial sampling: accuracy versus time (float kernels, 323-point grid, CPU time, one run)\n\n"
+         << "Times per sample: KK25 Alg. 1 (Eq. 25), the mean-preserving sampler (log1p) and std::binomial_distribution each the least of "
+         << round_count << " rounds spread over the run; the other knobs timed once (their speed-ups over std therefore read low, if anything).\n\n"
+         << md.str()
          << "\nMedian over the grid of per-point time ratios: mean-preserving / dual-gated = " << fmt(median(unbiased_over_dual), "%.2f")
          << " (ratio of medians " << fmt(median_unbiased / median_dual, "%.2f") << ").\n\n" << ratios.str() << "\n"
          << mm.str() << "\n";
@@ -365,7 +397,10 @@ section binomial_section(double min_time) {
         << "timing loop with N and p hidden from the optimiser, so no work is hoisted out of the loop),\n"
         << "summarised by the median over the grid; the\n"
         << "speed-up is the median over the grid of the per-point ratio to std::binomial_distribution\n"
-        << "(constructed per sample, as a per-pixel N and p require). Only ratios from one run mean anything.\n\n"
+        << "(constructed per sample, as a per-pixel N and p require). Only ratios from one run mean anything.\n"
+        << "KK25 Alg. 1 (Eq. 25), the mean-preserving sampler (log1p) and std::binomial_distribution, whose ratios are the\n"
+        << "sampler's targets, are each timed in " << round_count << " rounds spread over the run, every point's time the least of its\n"
+        << "rounds; the other knobs once (their speed-ups over std read low, if anything).\n\n"
         << md.str()
         << "\nMedian over the grid of per-point time ratios: mean-preserving / dual-gated = " << fmt(median(unbiased_over_dual), "%.2f") << ".\n\n"
         << ratios.str() << "\n" << mm.str() << "\n![accuracy versus time](binomial_accuracy_vs_time.svg)\n\n"

@@ -97,11 +97,23 @@ public:
     const std::vector<map>& roughness_chain() const { return chain_; }
     std::size_t clamped_pixels() const { return clamped_; }
 
-    // Trilinear lookup at direction d (world, y up) and sqrt(alpha) in [0, 1].
-    sample lookup(const glm::vec3& d, float sqrt_alpha) const { return lookup_channels(d, sqrt_alpha, channels()); }
+    // Trilinear lookup at direction d (world, y up) and sqrt(alpha) in [0, 1]. The channel count as
+    // a constant, so that the compiler unrolls and vectorises the taps' sums (read at run time, all
+    // 3 + K channels cost 1.8x the radiance's 3: glint_frame_loop ibl-lookup against ibl-radiance,
+    // K = 4; as constants, 1.45x).
+    sample lookup(const glm::vec3& d, float sqrt_alpha) const {
+        switch (channels()) {  // 3 to 8 levels (build_environment checks)
+            case 6: return lookup_channels<6>(d, sqrt_alpha);
+            case 7: return lookup_channels<7>(d, sqrt_alpha);
+            case 8: return lookup_channels<8>(d, sqrt_alpha);
+            case 9: return lookup_channels<9>(d, sqrt_alpha);
+            case 10: return lookup_channels<10>(d, sqrt_alpha);
+            default: return lookup_channels<11>(d, sqrt_alpha);
+        }
+    }
     // The radiance alone (the indicators left 0): what smooth shading and the background need,
     // without reading the K indicator channels that only the glints use.
-    glm::vec3 lookup_radiance(const glm::vec3& d, float sqrt_alpha) const { return lookup_channels(d, sqrt_alpha, 3).radiance; }
+    glm::vec3 lookup_radiance(const glm::vec3& d, float sqrt_alpha) const { return lookup_channels<3>(d, sqrt_alpha).radiance; }
 
     // E_rho(cos theta_o, sqrt alpha) and E_D(cos theta_o, sqrt alpha), bilinear (GL_CLAMP_TO_EDGE)
     // in (sqrt(cos theta_o), sqrt alpha): the square root resolves the steep grazing end.
@@ -116,37 +128,21 @@ public:
 private:
     friend environment build_environment(int width, int height, const std::vector<float>& rgb, const ibl_options& o);
 
-    // The first `read` channels of the trilinear lookup (3: the radiance; channels(): all).
-    sample lookup_channels(const glm::vec3& d, float sqrt_alpha, int read) const {
+    // The first Read channels of the trilinear lookup (3: the radiance; channels(): all).
+    template <int Read>
+    sample lookup_channels(const glm::vec3& d, float sqrt_alpha) const {
         using k = detail::glsl::kernels<float>;
         const glm::vec2 uv = k::glint_equirect_uv(d);
         const float f = std::clamp(sqrt_alpha, 0.0f, 1.0f) * static_cast<float>(chain_.size() - 1);
         const std::size_t m0 = std::min(static_cast<std::size_t>(f), chain_.size() - 1), m1 = std::min(m0 + 1, chain_.size() - 1);
         const float t = f - static_cast<float>(m0);
         float v[16] = {};
-        // The channel count as a constant, so that the compiler unrolls and vectorises the taps' sums
-        // (read at run time, all 3 + K channels cost 1.8x the radiance's 3: glint_frame_loop
-        // ibl-lookup against ibl-radiance, K = 4).
-        switch (read) {
-            case 3: add_trilinear<3>(uv, m0, m1, t, v); break;
-            case 6: add_trilinear<6>(uv, m0, m1, t, v); break;
-            case 7: add_trilinear<7>(uv, m0, m1, t, v); break;
-            case 8: add_trilinear<8>(uv, m0, m1, t, v); break;
-            case 9: add_trilinear<9>(uv, m0, m1, t, v); break;
-            case 10: add_trilinear<10>(uv, m0, m1, t, v); break;
-            default: add_trilinear<11>(uv, m0, m1, t, v); break;  // 8 levels (build_environment takes 3 to 8)
-        }
+        add_bilinear<Read>(chain_[m0], uv, channels(), Read, 1 - t, v);
+        if (t > 0) add_bilinear<Read>(chain_[m1], uv, channels(), Read, t, v);
         sample s;
         s.radiance = glm::vec3(v[0], v[1], v[2]);
         for (int k2 = 0; k2 < 8; ++k2) s.indicators.w[k2] = k2 < levels_.count ? v[3 + k2] : 0.0f;
         return s;
-    }
-
-    // out[0..Read) += the GL_LINEAR filtered texels of levels m0 (weight 1 - t) and m1 (weight t) at uv.
-    template <int Read>
-    void add_trilinear(const glm::vec2& uv, std::size_t m0, std::size_t m1, float t, float* out) const {
-        add_bilinear<Read>(chain_[m0], uv, channels(), Read, 1 - t, out);
-        if (t > 0) add_bilinear<Read>(chain_[m1], uv, channels(), Read, t, out);
     }
 
     // out[0..read) += weight x the GL_LINEAR filtered texel of m (C channels a texel) at uv; Read:

@@ -193,8 +193,9 @@ GLINT_FN glint_bilinear_taps glint_bilinear(vec2 uv, int width, int height) {
     real fx0 = floor(x), fy0 = floor(y);
     real ax = x - fx0, ay = y - fy0;
     int x0 = int(fx0), y0 = int(fy0);
-    // Repeat in x (also for |u| large: fold into [0, width)); clamp in y.
-    x0 = x0 - width * int(floor(real(x0) / real(width)));
+    // Repeat in x (also for |u| large: fold into [0, width)); clamp in y. The fold's division only
+    // where x0 is outside (u outside [0, 1), or the first half texel).
+    if (x0 < 0 || x0 >= width) x0 = x0 - width * int(floor(real(x0) / real(width)));
     int x1 = (x0 + 1 == width) ? 0 : x0 + 1;
     int ya = clamp(y0, 0, height - 1), yb = clamp(y0 + 1, 0, height - 1);
     glint_bilinear_taps t;

@@ -156,7 +156,7 @@ void add_std(const Key& key, std::size_t i, double N, double p, double per_point
 
 template <class Key, std::size_t... K>
 void add_knobs(const Key& key, std::size_t i, float N, float p, const std::vector<float>& u, double per_point, std::index_sequence<K...>) {
-    (((K == timed_knob_dual || K == timed_knob_unbiased) ? void() : add_knob<K>(key, i, N, p, u, per_point)), ...);
+    (add_knob<K>(key, i, N, p, u, per_point, (K == timed_knob_dual || K == timed_knob_unbiased) ? 0 : -1), ...);  // round 0 of the timed pair
 }
 
 section binomial_section(double min_time) {
@@ -175,8 +175,6 @@ section binomial_section(double min_time) {
         // add its branches to every knob's time (1.2 to 1.6 ns per sample in the median over the grid
         // for the dual-gated and mean-preserving samplers, measured by this report at 716d827).
         add_knobs(key, i, N, p, u, per_point, std::make_index_sequence<knob_count>());
-        add_knob<timed_knob_dual>(key, i, N, p, u, per_point, 0);  // round 0; the others below
-        add_knob<timed_knob_unbiased>(key, i, N, p, u, per_point, 0);
         const double Nd = points[i].N, pd = points[i].p;
         add_inline(key("unbiased_double", i), [=](std::size_t j) {
             auto r = glint::binomial_unbiased(launder(Nd), launder(pd), ud[j & 1023], ud[(j * 7 + 3) & 1023]);

@@ -208,23 +208,19 @@ section binomial_section(double min_time) {
     // mean-preserving sampler against Alg. 1 there, so that the report's worst ratio is not only the
     // grid's.
     const std::vector<grid_point> between = between_grid();
-    for (std::size_t i = 0; i < between.size(); ++i) {
-        const float N = static_cast<float>(between[i].N), p = static_cast<float>(between[i].p);
-        add_knob<timed_knob_dual>(key_between, i, N, p, u, per_point, 0);
-        add_knob<timed_knob_unbiased>(key_between, i, N, p, u, per_point, 0);
-    }
+    // Round r of the timed pair at point g, registered under key_of (the grid's or key_between).
+    auto add_timed_pair = [&](const auto& key_of, const grid_point& g, std::size_t i, int r) {
+        const float N = static_cast<float>(g.N), p = static_cast<float>(g.p);
+        add_knob<timed_knob_dual>(key_of, i, N, p, u, per_point, r);
+        add_knob<timed_knob_unbiased>(key_of, i, N, p, u, per_point, r);
+    };
+    for (std::size_t i = 0; i < between.size(); ++i) add_timed_pair(key_between, between[i], i, 0);
     for (int r = 1; r < round_count; ++r) {
         for (std::size_t i = 0; i < points.size(); ++i) {
-            const float N = static_cast<float>(points[i].N), p = static_cast<float>(points[i].p);
-            add_knob<timed_knob_dual>(key, i, N, p, u, per_point, r);
-            add_knob<timed_knob_unbiased>(key, i, N, p, u, per_point, r);
+            add_timed_pair(key, points[i], i, r);
             add_std(key, i, points[i].N, points[i].p, per_point, r);
         }
-        for (std::size_t i = 0; i < between.size(); ++i) {
-            const float N = static_cast<float>(between[i].N), p = static_cast<float>(between[i].p);
-            add_knob<timed_knob_dual>(key_between, i, N, p, u, per_point, r);
-            add_knob<timed_knob_unbiased>(key_between, i, N, p, u, per_point, r);
-        }
+        for (std::size_t i = 0; i < between.size(); ++i) add_timed_pair(key_between, between[i], i, r);
     }
     const std::map<std::string, double> ns = run_all();
     auto series = [&](const std::string& name) {

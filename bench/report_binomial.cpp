@@ -49,6 +49,13 @@ constexpr std::size_t knob_count = sizeof(knobs) / sizeof(knobs[0]);
 // 2 to 6 ns: a slow phase of this shared machine falling on one of the two decided it.
 constexpr std::size_t timed_knob_dual = 5, timed_knob_unbiased = 8;
 
+// The timing loops cycle through 65536 uniform pairs (256 KiB of floats, within L2). With 1024 (the
+// report until 2026-12-06) the branch predictor of this AMD EPYC learnt each point's cycle of draws:
+// a loop of 2e6 draws of the mean-preserving sampler at (N, p) = (30, 0.5), whose exact walk ends
+// where u1 says, took 23 ns a draw over 1024 pairs and 42 ns over 65536 or 2^20 (Alg. 1: 14.7 and
+// 17.3 ns), at (5, 0.5) 13 and 25 ns. A renderer's draws do not repeat: the longer cycle is its case.
+constexpr std::size_t uniform_mask = 65535;
+
 const char* method_name(pow_method m) {
     return m == pow_method::naive ? "naive" : (m == pow_method::kk25 ? "kk25" : "log1p");
 }
@@ -129,9 +136,9 @@ std::string svg_plot(const std::vector<std::string>& labels, const std::vector<d
 // Registers the timing of knob K at grid point i (as round `round` of round_count where given:
 // run_all keeps the least time over the rounds).
 template <std::size_t K, class Key>
-void add_knob(const Key& key, std::size_t i, float N, float p, const std::vector<float>& u, double per_point, int round = -1) {
+void add_knob(const Key& key, std::size_t i, float N, float p, const float* u, double per_point, int round = -1) {
     add_inline(key("knob" + std::to_string(K), i) + (round >= 0 ? round_suffix(round) : std::string()), [=](std::size_t j) {
-        auto r = glint::binomial(knobs[K].variant, launder(N), launder(p), u[j & 1023], u[(j * 7 + 3) & 1023], knobs[K].method);
+        auto r = glint::binomial(knobs[K].variant, launder(N), launder(p), u[j & uniform_mask], u[(j * 7 + 3) & uniform_mask], knobs[K].method);
         benchmark::DoNotOptimize(r);
     }, per_point);
 }
@@ -155,7 +162,7 @@ void add_std(const Key& key, std::size_t i, double N, double p, double per_point
 }
 
 template <class Key, std::size_t... K>
-void add_knobs(const Key& key, std::size_t i, float N, float p, const std::vector<float>& u, double per_point, std::index_sequence<K...>) {
+void add_knobs(const Key& key, std::size_t i, float N, float p, const float* u, double per_point, std::index_sequence<K...>) {
     (add_knob<K>(key, i, N, p, u, per_point, (K == timed_knob_dual || K == timed_knob_unbiased) ? 0 : -1), ...);  // round 0 of the timed pair
 }
 
@@ -164,9 +171,13 @@ section binomial_section(double min_time) {
     const double per_point = std::max(min_time / 10, 0.001);
 
     // Timing: every knob in float at every grid point; the defaults in double; the references.
-    std::vector<float> u(1024);
-    for (std::size_t i = 0; i < u.size(); ++i) u[i] = glint::open_unit_from_bits<float>(glint::pcg3d(glm::uvec3(static_cast<std::uint32_t>(i), 5u, 6u)).x);
-    std::vector<double> ud(u.begin(), u.end());
+    // The loops read the uniforms through pointers: each lambda captured its own copy of the vectors.
+    std::vector<float> uniforms(uniform_mask + 1);
+    for (std::size_t i = 0; i < uniforms.size(); ++i)
+        uniforms[i] = glint::open_unit_from_bits<float>(glint::pcg3d(glm::uvec3(static_cast<std::uint32_t>(i), 5u, 6u)).x);
+    const std::vector<double> uniforms_double(uniforms.begin(), uniforms.end());
+    const float* u = uniforms.data();
+    const double* ud = uniforms_double.data();
     auto key = [](const std::string& series, std::size_t i) { return series + "/" + std::to_string(i); };
     for (std::size_t i = 0; i < points.size(); ++i) {
         const float N = static_cast<float>(points[i].N), p = static_cast<float>(points[i].p);
@@ -177,11 +188,11 @@ section binomial_section(double min_time) {
         add_knobs(key, i, N, p, u, per_point, std::make_index_sequence<knob_count>());
         const double Nd = points[i].N, pd = points[i].p;
         add_inline(key("unbiased_double", i), [=](std::size_t j) {
-            auto r = glint::binomial_unbiased(launder(Nd), launder(pd), ud[j & 1023], ud[(j * 7 + 3) & 1023]);
+            auto r = glint::binomial_unbiased(launder(Nd), launder(pd), ud[j & uniform_mask], ud[(j * 7 + 3) & uniform_mask]);
             benchmark::DoNotOptimize(r);
         }, per_point);
         add_inline(key("dual_gated_double", i), [=](std::size_t j) {
-            auto r = glint::binomial_dual_gated(launder(Nd), launder(pd), ud[j & 1023], ud[(j * 7 + 3) & 1023]);
+            auto r = glint::binomial_dual_gated(launder(Nd), launder(pd), ud[j & uniform_mask], ud[(j * 7 + 3) & uniform_mask]);
             benchmark::DoNotOptimize(r);
         }, per_point);
         add_std(key, i, Nd, pd, per_point, 0);
@@ -200,13 +211,12 @@ section binomial_section(double min_time) {
         }
         if (i % 10 == 0) {  // the exact reference at every tenth point: it is slow
             auto exact = std::make_shared<gt::binomial_exact>(Nd, pd);
-            add_inline(key("exact", i), [=](std::size_t j) { benchmark::DoNotOptimize(exact->sample(ud[j & 1023], ud[(j * 13 + 5) & 1023])); }, per_point);
+            add_inline(key("exact", i), [=](std::size_t j) { benchmark::DoNotOptimize(exact->sample(ud[j & uniform_mask], ud[(j * 13 + 5) & uniform_mask])); }, per_point);
         }
     }
-    // Between the grid's N = 10 and 30, where no grid point lies: the walk stops at N = 16 and the
-    // middle's parameters come from the far bound's table until that bound is clear. The
-    // mean-preserving sampler against Alg. 1 there, so that the report's worst ratio is not only the
-    // grid's.
+    // Between the grid's N = 10 and 30, where no grid point lies and the sampler's exact walk is
+    // longest (about N p_near + 1 support points a draw). The mean-preserving sampler against
+    // Alg. 1 there, so that the report's worst ratio is not only the grid's.
     const std::vector<grid_point> between = between_grid();
     // Round r of the timed pair at point g, registered under key_of (the grid's or key_between).
     auto add_timed_pair = [&](const auto& key_of, const grid_point& g, std::size_t i, int r) {
@@ -387,7 +397,7 @@ section binomial_section(double min_time) {
         << "where KK25's Fig. 5 shows up. A relative mean bias counts where it exceeds 1e-7 in absolute terms\n"
         << "(the target: 0.1% relative or 1e-7 absolute; the float kernel's 2^-24 uniforms put a gate\n"
         << "probability below 1e-6 off by up to 6e-8). Times are CPU time per sample\n"
-        << "at each grid point (1024 uniform pairs cycled; every sampler, std's included, inlined into the\n"
+        << "at each grid point (65536 uniform pairs cycled, too many for the branch predictor to learn; every sampler, std's included, inlined into the\n"
         << "timing loop with N and p hidden from the optimiser, so no work is hoisted out of the loop),\n"
         << "summarised by the median over the grid; the\n"
         << "speed-up is the median over the grid of the per-point ratio to std::binomial_distribution\n"

@@ -90,10 +90,13 @@
 // skip test take (glint_binomial_trials_bound). From N = 32 to 40 the walk and steps 1 to 4 are
 // mixed with weights (40 - N) / 8 and (N - 32) / 8, chosen by u2 (each then reads u2 stretched
 // back onto (0, 1)): a walk at p = 1/2 takes about N / 2 support points, the Gaussian middle a
-// constant time. About N p_near + 1 points a draw: 8.8 ns at N = 30, p = 0.1 and 23.6 ns at
-// p = 1/2 against KK25 Alg. 1's 19.0 and 17.0 (the Gaussian middle took 46 and 28.8 there, and 45
-// to 52 ns at N from 16 to 28 near p = 1/2; a timing loop of the report's kind, CPU; the report's
-// figures are in docs/binomial.md).
+// constant time. About N p_near + 1 points a draw, the last a mispredicted branch: over 65536
+// uniform pairs 34.6 ns at N = 30, p = 0.3 and 38.8 ns at p = 1/2 against KK25 Alg. 1's 18.3 and
+// 17.8, where the closed-form middle alone (which N < 32 does not take: its far bound and the
+// band's fit need N >= 29 and 32) costs 26.5 and 19.8 (a timing loop of the report's kind, CPU;
+// over 1024 pairs, whose cycle the branch predictor learns, the walk took 23.6 ns at p = 1/2). So
+// the walk is the sampler's costliest path, up to 2.5x Alg. 1 at N from 21 to 30 near p = 1/2
+// (docs/binomial.md).
 //
 // Cost. binomial_dual_gated and binomial_unbiased evaluate a transcendental only where it can
 // change the result, and return bit for bit what the straight-line evaluation returns (for u1 a
@@ -121,8 +124,10 @@
 // the band, or a sqrt and two polynomials from N p = 3 on (and a log from p_near = 1/10 on and an
 // exp where N p_near (1 + p_near / 2 + p_near^2 / 3) < 9); elsewhere the ends (a log1p and an
 // exp), the moments, and the one-sided fit (a log, two polynomials, an exp). The fit
-// (glint_binomial_middle_fit) is out of line in C++: inlined, it slowed the sampler's other paths. Measured against Alg. 1 and
-// std::binomial_distribution: docs/binomial.md.
+// (glint_binomial_middle_fit) is out of line in C++: inlined, it slowed the sampler's other paths.
+// In C++ the near-end gate and the busy middle are inlined into the caller, the rest is called
+// (kernels/binomial.glsl says why). Measured against Alg. 1 and std::binomial_distribution:
+// docs/binomial.md.
 #pragma once
 
 #include "glint/core.hpp"

@@ -876,11 +876,13 @@ GLINT_FN glint_binomial glint_binomial_unbiased_small(real N, real p, real u1) {
 // from (1 - p)^M by squaring above; the masses by their ratio recurrence, two support points a
 // step with one division for both; where P(n > k) falls below 2^-10 of its last fresh value (the
 // far tail, which is P(0) for p > 1/2) it is summed afresh from the masses beyond.
-// About M p_near + 1 support points a draw: at N = 30, p = 1/2 23.6 ns against KK25 Alg. 1's 17.0
-// and the Gaussian middle's 28.8 (its closed form; 48 to 52 ns where the far bound's table served
-// it, N from 16 to 28 at p near 1/2, before the walk took N < 32), at (30, 0.1) 8.8 ns against
-// 19.0 and 46 (a timing loop of the report's kind, this 2-core AMD EPYC, CPU; docs/binomial.md has
-// the report's figures).
+// About M p_near + 1 support points a draw, the walk's exit a mispredicted branch: at N = 30,
+// p = 1/2 38.8 ns against KK25 Alg. 1's 17.8 and the closed-form middle's 19.8 (which needs
+// N >= 29 for its far bound), at (30, 0.3) 34.6 against 18.3 and 26.5 (a timing loop of the
+// report's kind over 65536 uniform pairs, this 2-core AMD EPYC, CPU; docs/binomial.md has the
+// report's figures). Over 1024 pairs, whose cycle the branch predictor learns, it took 23.6 ns at
+// (30, 1/2) and seemed faster than the middle (28.8 ns; 48 to 52 ns where the far bound's table
+// served N from 16 to 28 before the walk took N < 32).
 // (One uniform for both components, their support points interleaved, cost twice the work a
 // point: 64 ns at (30, 1/2); one division a point instead of a pair, 38 ns.)
 // From N = GLINT_BINOMIAL_WALK_FULL to GLINT_BINOMIAL_WALK_END, where a walk grows long at
@@ -1084,15 +1086,8 @@ GLINT_FN glint_binomial glint_binomial_unbiased_sure_middle(real N, real p, real
     return glint_binomial_pair(G, N - G);
 }
 
-// The mean-preserving dual-gated sampler: KK25 Alg. 1's gates (exact for N <= 2), and for N > 2
-// a middle part whose mean is E[n | 1 <= n <= N - 1] exactly and whose variance matches the
-// binomial's on that event (glint/binomial.hpp derives it). With the same result as the
-// straight-line evaluation, it skips every transcendental where the near-end gate surely fires
-// (glint_binomial_surely_near_end) and for N <= 2, and the ends' where both are subnormal.
-GLINT_FN glint_binomial glint_binomial_unbiased(real N, real p, real u1, real u2, int method) {
-    N = clamp(N, real(0), GLINT_BINOMIAL_MAX_N);
-    p = clamp(p, real(0), real(1));
-    if (glint_binomial_surely_near_end(N, p, u1, method)) return glint_binomial_near_end(N, p);
+// glint_binomial_unbiased (below) where the near-end gate does not surely fire, N and p clamped.
+GLINT_FN_OUT_OF_LINE glint_binomial glint_binomial_unbiased_rest(real N, real p, real u1, real u2, int method) {
     if (N <= real(2)) return glint_binomial_unbiased_small(N, p, u1);
     if (glint_binomial_walks(N, u2)) return glint_binomial_walk(N, p, u1, u2);
     glint_binomial busy;
@@ -1130,6 +1125,35 @@ GLINT_FN glint_binomial glint_binomial_unbiased(real N, real p, real u1, real u2
     real G = real(1);
     if (g.gaussian > real(0.5)) G = glint_binomial_unbiased_middle(glint_binomial_unbiased_middle_setup(N, p, e), N, u2);
     return glint_binomial_pair(g.positive_fixed + g.gaussian * G, g.negative_fixed + g.gaussian * (N - G));
+}
+
+// The mean-preserving dual-gated sampler: KK25 Alg. 1's gates (exact for N <= 2), and for N > 2
+// a middle part whose mean is E[n | 1 <= n <= N - 1] exactly and whose variance matches the
+// binomial's on that event (glint/binomial.hpp derives it). With the same result as the
+// straight-line evaluation, it skips every transcendental where the near-end gate surely fires
+// (glint_binomial_surely_near_end) and for N <= 2, and the ends' where both are subnormal.
+// In C++ the cheap cases are inlined into the caller and the rest (N <= 2, the walk, the middle)
+// is called out of line: the near end (most draws of sparse glints) and, from N = WALK_END on
+// (where the walk leaves u2 as it is), the busy middle (most draws of large footprints). With the
+// whole sampler out of line (GCC inlines Alg. 1), a loop of the report's kind (65536 uniform pairs;
+// this 2-core AMD EPYC, CPU) took 16.2 ns a draw at (1e9, 0.5) against Alg. 1's 14.3, now 14.8;
+// 2.6 ns at (30, 1e-5) against 1.9, now 2.1; 4.0 ns at (100, 1) against 2.9, now 2.6. N <= 2 stays
+// out of line, tested apart before the near-end gate: inlined, its gates and that gate's test on
+// u1 became branches in the caller, and those draws went from 3.6 to 8 to 11 ns. GLSL inlines
+// everything and keeps one copy of the busy middle, in the rest.
+GLINT_FN_INLINE glint_binomial glint_binomial_unbiased(real N, real p, real u1, real u2, int method) {
+    N = clamp(N, real(0), GLINT_BINOMIAL_MAX_N);
+    p = clamp(p, real(0), real(1));
+#if defined(GLINT_GLSL)
+    if (glint_binomial_surely_near_end(N, p, u1, method)) return glint_binomial_near_end(N, p);
+#else
+    if (N > real(2)) {
+        if (glint_binomial_surely_near_end(N, p, u1, method)) return glint_binomial_near_end(N, p);
+        glint_binomial busy;
+        if (N >= GLINT_BINOMIAL_WALK_END && glint_binomial_unbiased_busy(N, p, u1, u2, method, busy)) return busy;
+    }
+#endif
+    return glint_binomial_unbiased_rest(N, p, u1, u2, method);  // one call: GLSL inlines it once
 }
 
 // The mean-preserving sampler's parameters at one (N, p), kept between draws that share them (the

@@ -14,6 +14,11 @@
 //                                          frame time
 //   glint_frame_loop ibl-radiance K FRAMES the lookups of the radiance alone (the smooth frame's)
 //   glint_frame_loop draw N P              2e5 draws of glint::binomial_unbiased at (N, P)
+//   glint_frame_loop draw-time N P PAIRS   ns a draw at (N, P) over PAIRS uniform pairs cycled (the
+//                                          report's 65536; 1024 lets the branch predictor learn the
+//                                          cycle): the mean-preserving sampler, KK25 Alg. 1 (Eq.
+//                                          25) and the closed-form middle alone, each the least of
+//                                          7 alternating loops of 2e6 draws
 //   glint_frame_loop lights K MODE REPS    the report's several-lights workload
 //                                          (bench/light_pixels.hpp): its 1024 pixels with K
 //                                          lights, MODE 0 smooth, 1 one shared footprint, 2 a
@@ -25,17 +30,35 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <vector>
 
 #include <glint/binomial.hpp>
 #include <glint/ibl.hpp>
 #include <glint/io/exr.hpp>
 
 #include "../examples/lights_scene.hpp"
+#include "launder.hpp"
 #include "light_pixels.hpp"
 
 #ifndef GLINT_DATA_DIR
 #error "GLINT_DATA_DIR must point at the project's data/ folder"
 #endif
+
+// One loop of draw-time: 2e6 draws at (N, p), u[mask + 1] cycled; ns a draw.
+template <int Sampler>
+__attribute__((noinline)) double draw_time(float N, float p, const std::vector<float>& u, std::size_t mask) {
+    using K = glint::detail::glsl::kernels<float>;
+    const auto start = std::chrono::steady_clock::now();
+    for (std::size_t j = 0; j < 2000000; ++j) {
+        const float u1 = u[j & mask], u2 = u[(j * 7 + 3) & mask];
+        K::glint_binomial r;
+        if (Sampler == 0) r = K::glint_binomial_unbiased(glint_bench::launder(N), glint_bench::launder(p), u1, u2, K::GLINT_POW_LOG1P);
+        if (Sampler == 1) r = K::glint_binomial_dual_gated(glint_bench::launder(N), glint_bench::launder(p), u1, u2, K::GLINT_POW_KK25);
+        if (Sampler == 2) r = K::glint_binomial_unbiased_sure_middle(glint_bench::launder(N), glint_bench::launder(p), u2);
+        asm volatile("" : : "x"(r.positive), "x"(r.negative));
+    }
+    return std::chrono::duration<double, std::nano>(std::chrono::steady_clock::now() - start).count() / 2e6;
+}
 
 // Out of line, so that callgrind can count the estimate alone.
 // lattice_u < 0: every lattice point; else the one it picks.
@@ -129,13 +152,31 @@ int main(int argc, char** argv) {
             const glm::uvec3 h = glint::pcg3d(glm::uvec3(i, 1u, 2u));
             sum += static_cast<double>(glint::binomial_unbiased(N, p, glint::open_unit_from_bits<float>(h.x), glint::open_unit_from_bits<float>(h.y)).positive);
         }
+    } else if (argc == 5 && !std::strcmp(mode, "draw-time")) {
+        const float N = std::strtof(argv[2], nullptr), p = std::strtof(argv[3], nullptr);
+        const long pairs = std::atol(argv[4]);
+        if (pairs < 1 || pairs > (1L << 24) || (pairs & (pairs - 1)) != 0) {
+            std::fprintf(stderr, "draw-time: PAIRS must be a power of two from 1 to 2^24\n");
+            return 2;
+        }
+        std::vector<float> u(static_cast<std::size_t>(pairs));
+        for (std::size_t i = 0; i < u.size(); ++i) u[i] = glint::open_unit_from_bits<float>(glint::pcg3d(glm::uvec3(static_cast<std::uint32_t>(i), 5u, 6u)).x);
+        double t[3] = {1e30, 1e30, 1e30};
+        for (int r = 0; r < 7; ++r) {
+            t[0] = std::min(t[0], draw_time<0>(N, p, u, u.size() - 1));
+            t[1] = std::min(t[1], draw_time<1>(N, p, u, u.size() - 1));
+            t[2] = std::min(t[2], draw_time<2>(N, p, u, u.size() - 1));
+        }
+        std::printf("draw-time (%g, %g), %ld pairs: mean-preserving %.1f ns, KK25 Alg. 1 %.1f ns, closed-form middle alone %.1f ns a draw\n", static_cast<double>(N),
+                    static_cast<double>(p), pairs, t[0], t[1], t[2]);
+        return 0;  // timings only: no sum to compare
     } else if (argc == 5 && !std::strcmp(mode, "lights")) {
         const glint_bench::light_pixels lp;
         const int k = std::atoi(argv[2]), shading = std::atoi(argv[3]);
         for (int rep = 0; rep < std::atoi(argv[4]); ++rep)
             for (int i = 0; i < glint_bench::light_pixels::pixels; ++i) sum += static_cast<double>(glint_bench::shade_light_pixel(lp, i, k, shading).x);
     } else {
-        std::fprintf(stderr, "usage: glint_frame_loop point|point-smooth|point-stochastic FRAMES | ibl|ibl-stochastic|ibl-lookup|ibl-radiance K FRAMES | draw N P | lights K MODE REPS\n");
+        std::fprintf(stderr, "usage: glint_frame_loop point|point-smooth|point-stochastic FRAMES | ibl|ibl-stochastic|ibl-lookup|ibl-radiance K FRAMES | draw N P | draw-time N P PAIRS | lights K MODE REPS\n");
         return 2;
     }
     std::printf("%s: sum %.9g\n", mode, sum);

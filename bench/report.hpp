@@ -4,6 +4,8 @@
 
 #include <benchmark/benchmark.h>
 
+#include "launder.hpp"
+
 #include <algorithm>
 #include <cstdio>
 #include <functional>
@@ -73,14 +75,7 @@ void add_all_cores(const std::string& name, Rows rows, double min_time) {
     })->Threads(all_cores())->UseRealTime()->MinTime(min_time);
 }
 
-// x, as a value the compiler must assume unknown. Not benchmark::DoNotOptimize(x): its "+m,r"
-// constraint makes g++ 12 read a float or double back as 0 when it picks the register form.
-template <class T>
-T launder(T x) {
-    static_assert(std::is_floating_point<T>::value, "launder takes float or double");
-    asm volatile("" : "+x"(x));  // x stays in an SSE register
-    return x;
-}
+using glint_bench::launder;  // launder.hpp
 
 // Benchmarks compared as ratios (a glint frame against its smooth frame) are registered
 // round_count times each, round by round, as name + round_suffix(r): run_all then times them

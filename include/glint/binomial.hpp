@@ -91,10 +91,10 @@
 // mixed with weights (40 - N) / 8 and (N - 32) / 8, chosen by u2 (each then reads u2 stretched
 // back onto (0, 1)): a walk at p = 1/2 takes about N / 2 support points, the Gaussian middle a
 // constant time. About N p_near + 1 points a draw, the last a mispredicted branch: over 65536
-// uniform pairs 34.6 ns at N = 30, p = 0.3 and 38.8 ns at p = 1/2 against KK25 Alg. 1's 18.3 and
-// 17.8, where the closed-form middle alone (which N < 32 does not take: its far bound and the
-// band's fit need N >= 29 and 32) costs 26.5 and 19.8 (a timing loop of the report's kind, CPU;
-// over 1024 pairs, whose cycle the branch predictor learns, the walk took 23.6 ns at p = 1/2). So
+// uniform pairs 38.9 ns at N = 30, p = 0.3 and 44.8 ns at p = 1/2 against KK25 Alg. 1's 18.6 and
+// 18.0, where the closed-form middle alone (which N < 32 does not take: its far bound and the
+// band's fit need N >= 29 and 32) costs 26.9 and 21.3 (`glint_frame_loop draw-time 30 0.5 65536`,
+// CPU; over 1024 pairs, whose cycle the branch predictor learns, the walk took 24.5 ns at p = 1/2). So
 // the walk is the sampler's costliest path, up to 2.5x Alg. 1 at N from 21 to 30 near p = 1/2
 // (docs/binomial.md).
 //

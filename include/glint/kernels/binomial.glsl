@@ -877,12 +877,12 @@ GLINT_FN glint_binomial glint_binomial_unbiased_small(real N, real p, real u1) {
 // step with one division for both; where P(n > k) falls below 2^-10 of its last fresh value (the
 // far tail, which is P(0) for p > 1/2) it is summed afresh from the masses beyond.
 // About M p_near + 1 support points a draw, the walk's exit a mispredicted branch: at N = 30,
-// p = 1/2 38.8 ns against KK25 Alg. 1's 17.8 and the closed-form middle's 19.8 (which needs
-// N >= 29 for its far bound), at (30, 0.3) 34.6 against 18.3 and 26.5 (a timing loop of the
-// report's kind over 65536 uniform pairs, this 2-core AMD EPYC, CPU; docs/binomial.md has the
-// report's figures). Over 1024 pairs, whose cycle the branch predictor learns, it took 23.6 ns at
-// (30, 1/2) and seemed faster than the middle (28.8 ns; 48 to 52 ns where the far bound's table
-// served N from 16 to 28 before the walk took N < 32).
+// p = 1/2 44.8 ns against KK25 Alg. 1's 18.0 and the closed-form middle's 21.3 (which needs
+// N >= 29 for its far bound), at (30, 0.3) 38.9 against 18.6 and 26.9 (`glint_frame_loop draw-time
+// 30 0.5 65536`: 65536 uniform pairs, this 2-core AMD EPYC, CPU; docs/binomial.md has the report's
+// figures). Over 1024 pairs, whose cycle the branch predictor learns, it took 24.5 ns at (30, 1/2)
+// (23.6 when the walk was chosen) and seemed faster than the middle (28.8 ns then; 48 to 52 ns
+// where the far bound's table served N from 16 to 28 before the walk took N < 32).
 // (One uniform for both components, their support points interleaved, cost twice the work a
 // point: 64 ns at (30, 1/2); one division a point instead of a pair, 38 ns.)
 // From N = GLINT_BINOMIAL_WALK_FULL to GLINT_BINOMIAL_WALK_END, where a walk grows long at

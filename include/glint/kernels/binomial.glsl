@@ -873,18 +873,21 @@ GLINT_FN glint_binomial glint_binomial_unbiased_small(real N, real p, real u1) {
 // (glint_binomial_trials_bound). The walk subtracts each support point's mass from P(n > k),
 // without a transcendental: P(n > 0) = 1 - (1 - p)^M from its series where M p < 1/4 (no
 // cancellation; truncated after its seventh term, relative error below (M p)^7 / 8! = 1.5e-9) and
-// from (1 - p)^M by squaring above; the masses by their ratio recurrence, two support points a
-// step with one division for both; where P(n > k) falls below 2^-10 of its last fresh value (the
+// from (1 - p)^M by squaring above; the masses by their ratio recurrence, four support points a
+// step (glint_binomial_walk_count); where P(n > k) falls below 2^-10 of its last fresh value (the
 // far tail, which is P(0) for p > 1/2) it is summed afresh from the masses beyond.
-// About M p_near + 1 support points a draw, the walk's exit a mispredicted branch: at N = 30,
-// p = 1/2 44.8 ns against KK25 Alg. 1's 18.0 and the closed-form middle's 21.3 (which needs
-// N >= 29 for its far bound), at (30, 0.3) 38.9 against 18.6 and 26.9 (`glint_frame_loop draw-time
-// 30 0.5 65536`: 65536 uniform pairs, this 2-core AMD EPYC, CPU; docs/binomial.md has the report's
-// figures). Over 1024 pairs, whose cycle the branch predictor learns, it took 24.5 ns at (30, 1/2)
-// (23.6 when the walk was chosen) and seemed faster than the middle (28.8 ns then; 48 to 52 ns
-// where the far bound's table served N from 16 to 28 before the walk took N < 32).
-// (One uniform for both components, their support points interleaved, cost twice the work a
-// point: 64 ns at (30, 1/2); one division a point instead of a pair, 38 ns.)
+// About (M p_near + 1) / 4 steps a draw, the walk's exit a mispredicted branch: at N = 30,
+// p = 1/2 31.4 to 32.3 ns against KK25 Alg. 1's 18.3 to 18.7 and the closed-form middle's 21.9 to
+// 22.5 (which needs N >= 29 for its far bound), at (30, 0.3) 28.0 and 28.3 against 18.3 and 18.6
+// (`glint_frame_loop draw-time 30 0.5 65536`: 65536 uniform pairs, three runs on this 2-core AMD
+// EPYC, CPU; docs/binomial.md has the report's figures). Earlier walks, the same measurement at
+// (30, 1/2): two support points a step with one division for both, each step's exit a branch,
+// 43.5 to 44.8 ns (its chain two multiplications and two subtractions a step); four a step with
+// one division for the four, 36.6 and 36.8; four a step in SSE lanes (GCC vector extensions),
+// one division for each and the products and sums as shuffled scans, 42.7 and 42.9. Over 1024
+// pairs, whose cycle the branch predictor learns, the two-point walk took 24.5 ns and seemed
+// faster than the middle (28.8 ns then). (One uniform for both components, their support points
+// interleaved, cost twice the work a point: 64 ns at (30, 1/2); one division a point, 38 ns.)
 // From N = GLINT_BINOMIAL_WALK_FULL to GLINT_BINOMIAL_WALK_END, where a walk grows long at
 // p near 1/2, the sampler blends into the Gaussian middle: it walks with probability
 // w = (WALK_END - N) / (WALK_END - WALK_FULL), chosen by |u2 - 1/2| < w / 2 (symmetric in u2 and
@@ -892,6 +895,11 @@ GLINT_FN glint_binomial glint_binomial_unbiased_small(real N, real p, real u1) {
 // stretched back onto (0, 1) to pick its component), and otherwise draws the Gaussian middle with
 // u2 stretched back onto (0, 1). The law is then the mixture of the two with weights w and 1 - w:
 // continuous in N, with the mean N p of both.
+// The blend costs more than either alone near p = 1/2: which of the two draws is a branch taken
+// at random, and the middle there is the fitted one (glint_binomial_unbiased_busy's shortcut needs
+// 6 sd below the mean, lambda near 20 at p = 1/2): 39.6 ns a draw at (33, 1/2), 41.8 at (35, 1/2),
+// 40.2 at (37, 1/2), 35.4 at (39, 1/2) against Alg. 1's 17.1 to 18.0 (`glint_frame_loop draw-time`,
+// one run each), up to 2.35x; no grid point lies there.
 GLINT_CONST(int) GLINT_BINOMIAL_WALK_MAX_TRIALS = 40;  // ceil(WALK_END): the loops' constant bound
 
 // b(M, q) at support point 0 (M < 64 trials, q = p_near <= 1/2): the mass there, P(n > 0).
@@ -942,36 +950,70 @@ GLINT_FN real glint_binomial_walk_tail(int M, real ratio, real mass, int k) {
     return sum;
 }
 
-// The count of b(M, q) for v = u1 (or 1 - u1 mirrored): the largest k with P(n >= k) > v. Two
-// support points a step, with one division for both (1 / k = (k + 1) r and 1 / (k + 1) = k r with
-// r = q / (1 - q) / (k (k + 1))). P(n > k) comes by difference, and where that falls below 2^-10
-// of its last fresh value, afresh from the masses beyond k. (The rescue as a function taking the
-// state inout, instead of written out twice, made the draws at N = 30, p = 1/2 1.3x slower in C++.)
+// 1 / j for j = 0 to GLINT_BINOMIAL_WALK_MAX_TRIALS (0 at 0, which the walk never reads): each
+// the float nearest 1 / j, folded by the compiler on both sides, so that the walk's steps need no
+// division (one division per four support points: 36.6 and 36.8 ns a draw at N = 30, p = 1/2,
+// against 31.4 to 32.3 with the table; see "Small N" above).
+#if defined(GLINT_GLSL)
+const real glint_binomial_reciprocals[GLINT_BINOMIAL_WALK_MAX_TRIALS + 1] = real[GLINT_BINOMIAL_WALK_MAX_TRIALS + 1](
+    real(0), real(1), real(1) / real(2), real(1) / real(3), real(1) / real(4), real(1) / real(5),
+    real(1) / real(6), real(1) / real(7), real(1) / real(8), real(1) / real(9), real(1) / real(10),
+    real(1) / real(11), real(1) / real(12), real(1) / real(13), real(1) / real(14),
+    real(1) / real(15), real(1) / real(16), real(1) / real(17), real(1) / real(18),
+    real(1) / real(19), real(1) / real(20), real(1) / real(21), real(1) / real(22),
+    real(1) / real(23), real(1) / real(24), real(1) / real(25), real(1) / real(26),
+    real(1) / real(27), real(1) / real(28), real(1) / real(29), real(1) / real(30),
+    real(1) / real(31), real(1) / real(32), real(1) / real(33), real(1) / real(34),
+    real(1) / real(35), real(1) / real(36), real(1) / real(37), real(1) / real(38),
+    real(1) / real(39), real(1) / real(40)
+);
+GLINT_FN real glint_binomial_reciprocal(int j) {
+    return glint_binomial_reciprocals[j];
+}
+#else
+struct glint_binomial_reciprocal_table {
+    real r[GLINT_BINOMIAL_WALK_MAX_TRIALS + 1];
+    constexpr glint_binomial_reciprocal_table() : r() {
+        for (int j = 1; j <= GLINT_BINOMIAL_WALK_MAX_TRIALS; ++j) r[j] = real(1) / real(j);
+    }
+};
+GLINT_FN real glint_binomial_reciprocal(int j) {
+    static constexpr glint_binomial_reciprocal_table table{};  // constant-initialised: no guard
+    return table.r[j];
+}
+#endif
+
+// The count of b(M, q) for v = u1 (or 1 - u1 mirrored): the largest k with P(n >= k) > v. Four
+// support points a step: their mass ratios t_i = b(k + i) / b(k + i - 1) = (M - k - i + 1) q /
+// ((k + i) (1 - q)) do not depend on the walk so far, so the products and sums that follow from
+// them leave only one multiplication (the mass) and one subtraction (P(n > k + 4)) in the chain
+// from step to step, and one branch decides the step; the count within the step is the number of
+// its first three P(n > k + i) above v, without branches. Past M a ratio is 0 (M - k - i + 1 = 0),
+// so are the masses after it. P(n > k) comes by difference, and where it falls below 2^-10 of
+// its last fresh value, P(n > k + 4) is summed afresh from the masses beyond and the step's other
+// three are that sum plus the masses between (sums of positive terms, no cancellation).
 GLINT_FN int glint_binomial_walk_count(int M, real q, real v) {
     glint_binomial_walk_state w = glint_binomial_walk_start(M, q);
     if (!(w.survival > v)) return 0;
-    real ka = real(1), da = real(M);  // k and M + 1 - k at the step's first point
-    for (int k = 1; k < GLINT_BINOMIAL_WALK_MAX_TRIALS; k += 2) {
+    real d = real(M);  // M - k
+    for (int k = 0; k < GLINT_BINOMIAL_WALK_MAX_TRIALS; k += 4) {
         if (k >= M) break;
-        real kb = ka + real(1);
-        real r = w.ratio / (ka * kb);
-        w.mass *= da * (kb * r);
-        real s = w.survival - w.mass;
-        if (s < w.rescue) {
-            s = glint_binomial_walk_tail(M, w.ratio, w.mass, k);
-            w.rescue = s * real(1.0 / 1024.0);
+        real t1 = d * w.ratio * glint_binomial_reciprocal(k + 1), t2 = (d - real(1)) * w.ratio * glint_binomial_reciprocal(k + 2);
+        real t3 = (d - real(2)) * w.ratio * glint_binomial_reciprocal(k + 3), t4 = (d - real(3)) * w.ratio * glint_binomial_reciprocal(k + 4);
+        real m1 = w.mass * t1, m2 = w.mass * (t1 * t2), m3 = m2 * t3, m4 = w.mass * ((t1 * t2) * (t3 * t4));
+        real m12 = m1 + m2;
+        real s1 = w.survival - m1, s2 = w.survival - m12, s3 = w.survival - (m12 + m3), s4 = w.survival - (m12 + (m3 + m4));
+        if (s4 < w.rescue) {
+            s4 = glint_binomial_walk_tail(M, w.ratio, m4, k + 4);
+            s3 = s4 + m4;
+            s2 = s3 + m3;
+            s1 = s2 + m2;
+            w.rescue = s4 * real(1.0 / 1024.0);
         }
-        if (!(s > v)) return k;
-        if (k + 1 >= M) break;
-        w.mass *= (da - real(1)) * (ka * r);
-        w.survival = s - w.mass;
-        if (w.survival < w.rescue) {
-            w.survival = glint_binomial_walk_tail(M, w.ratio, w.mass, k + 1);
-            w.rescue = w.survival * real(1.0 / 1024.0);
-        }
-        if (!(w.survival > v)) return k + 1;
-        ka += real(2);
-        da -= real(2);
+        if (!(s4 > v)) return min(k + 1 + int(s1 > v) + int(s2 > v) + int(s3 > v), M);
+        w.mass = m4;
+        w.survival = s4;
+        d -= real(4);
     }
     return M;
 }
@@ -982,8 +1024,9 @@ GLINT_FN glint_binomial glint_binomial_walk(real N, real p, real u1, real u2) {
     bool lower = p <= real(0.5);
     int Na = int(N);
     int M = (u2 < N - real(Na)) ? Na + 1 : Na;
+    real scale = N / real(M);
     int k = glint_binomial_walk_count(M, lower ? p : real(1) - p, lower ? u1 : real(1) - u1);
-    real n = (k >= M) ? N : real(k) * N / real(M);
+    real n = (k >= M) ? N : real(k) * scale;
     return lower ? glint_binomial_pair(n, N - n) : glint_binomial_pair(N - n, n);
 }
 

@@ -283,7 +283,7 @@ binomial_model model_of(binomial_variant variant, double N_in, double p_in, pow_
                     if (mid <= lo || mid >= hi) break;
                     (k::glint_binomial_walk_count(M, q, static_cast<real>(mid)) >= j ? lo : hi) = mid;
                 }
-                d.atoms.push_back({place(static_cast<real>(j - 1) * Nr / static_cast<real>(M)), w * share * (above - lo)});
+                d.atoms.push_back({place(static_cast<real>(j - 1) * (Nr / static_cast<real>(M))), w * share * (above - lo)});
                 above = lo;
             }
             d.atoms.push_back({place(Nr), w * share * above});

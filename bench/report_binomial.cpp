@@ -52,9 +52,9 @@ constexpr std::size_t timed_knob_dual = 5, timed_knob_unbiased = 8;
 // The timing loops cycle through 65536 uniform pairs (256 KiB of floats, within L2). With 1024 (the
 // report until 2026-12-06) the branch predictor of this AMD EPYC learnt each point's cycle of draws:
 // the mean-preserving sampler at (N, p) = (30, 0.5), whose exact walk ends where u1 says, took
-// 24.5 ns a draw over 1024 pairs and 44.8 ns over 65536 (Alg. 1: 14.8 and 18.0 ns;
-// `glint_frame_loop draw-time 30 0.5 1024`, and 65536). A renderer's draws do not repeat: the
-// longer cycle is its case.
+// 24.5 ns a draw over 1024 pairs and 44.8 ns over 65536 (the walk of then, two support points a
+// step; Alg. 1: 14.8 and 18.0 ns; `glint_frame_loop draw-time 30 0.5 1024`, and 65536). A
+// renderer's draws do not repeat: the longer cycle is its case.
 constexpr std::size_t uniform_mask = 65535;
 
 const char* method_name(pow_method m) {

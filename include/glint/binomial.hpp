@@ -81,7 +81,7 @@
 // draws from L(N, p) = (1 - f) b(Na, p) N / Na + f b(Na + 1, p) N / (Na + 1), Na = floor(N),
 // f = N - Na (the two neighbouring binomials scaled onto [0, N], mixed by the fractional part):
 // u2 picks the component (Na + 1 trials where u2 < f), and u1 inverts its CDF, a walk over the
-// support from the near end without a transcendental, two support points a step
+// support from the near end without a transcendental, four support points a step
 // (kernels/binomial.glsl, glint_binomial_walk). At integer N that is b(N, p) itself; for real N
 // the mean is N p, P(n = 0) is the randomised-rounding binomial's, the values stay in [0, N], and
 // the variance is N^2 p (1 - p) ((1 - f) / Na + f / (Na + 1)), 0% to 4.2% above N p (1 - p). The
@@ -90,13 +90,14 @@
 // skip test take (glint_binomial_trials_bound). From N = 32 to 40 the walk and steps 1 to 4 are
 // mixed with weights (40 - N) / 8 and (N - 32) / 8, chosen by u2 (each then reads u2 stretched
 // back onto (0, 1)): a walk at p = 1/2 takes about N / 2 support points, the Gaussian middle a
-// constant time. About N p_near + 1 points a draw, the last a mispredicted branch: over 65536
-// uniform pairs 38.9 ns at N = 30, p = 0.3 and 44.8 ns at p = 1/2 against KK25 Alg. 1's 18.6 and
-// 18.0, where the closed-form middle alone (which N < 32 does not take: its far bound and the
-// band's fit need N >= 29 and 32) costs 26.9 and 21.3 (`glint_frame_loop draw-time 30 0.5 65536`,
-// CPU; over 1024 pairs, whose cycle the branch predictor learns, the walk took 24.5 ns at p = 1/2). So
-// the walk is the sampler's costliest path, up to 2.5x Alg. 1 at N from 21 to 30 near p = 1/2
-// (docs/binomial.md).
+// constant time. About (N p_near + 1) / 4 steps a draw, the step's exit a mispredicted branch:
+// over 65536 uniform pairs 28.0 ns at N = 30, p = 0.3 and 31.4 to 32.3 ns at p = 1/2 against
+// KK25 Alg. 1's 18.3 to 18.7, where the closed-form middle alone (which N < 32 does not take: its
+// far bound and the band's fit need N >= 29 and 32) costs 27.0 and 22 (`glint_frame_loop
+// draw-time 30 0.5 65536`, CPU). The walk is the sampler's costliest path on the grid: 1.64x
+// Alg. 1 at (30, 0.5) in the docs run, 1.60x at (29, 0.5) between the grid's N (docs/binomial.md).
+// In the blend from N = 32 to 40 a draw near p = 1/2 costs more than either path alone (up to
+// 2.35x Alg. 1 at N = 35; kernels/binomial.glsl says why).
 //
 // Cost. binomial_dual_gated and binomial_unbiased evaluate a transcendental only where it can
 // change the result, and return bit for bit what the straight-line evaluation returns (for u1 a

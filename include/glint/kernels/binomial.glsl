@@ -1000,7 +1000,8 @@ GLINT_FN int glint_binomial_walk_count(int M, real q, real v) {
         if (k >= M) break;
         real t1 = d * w.ratio * glint_binomial_reciprocal(k + 1), t2 = (d - real(1)) * w.ratio * glint_binomial_reciprocal(k + 2);
         real t3 = (d - real(2)) * w.ratio * glint_binomial_reciprocal(k + 3), t4 = (d - real(3)) * w.ratio * glint_binomial_reciprocal(k + 4);
-        real m1 = w.mass * t1, m2 = w.mass * (t1 * t2), m3 = m2 * t3, m4 = w.mass * ((t1 * t2) * (t3 * t4));
+        real c2 = t1 * t2;  // b(k + 2) / b(k)
+        real m1 = w.mass * t1, m2 = w.mass * c2, m3 = m2 * t3, m4 = w.mass * (c2 * (t3 * t4));
         real m12 = m1 + m2;
         real s1 = w.survival - m1, s2 = w.survival - m12, s3 = w.survival - (m12 + m3), s4 = w.survival - (m12 + (m3 + m4));
         if (s4 < w.rescue) {

@@ -215,7 +215,7 @@ GLINT_FN_INLINE const vec2* glint_lattice_rotation_table() {
     return t.r;
 }
 
-GLINT_FN_INLINE glint_lattice_triangles glint_lattice_triangles_x4(vec2 uv, glint_lattice lat, uint seed) {
+GLINT_FN_INLINE glint_lattice_triangles glint_lattice_triangles_x4(vec2 uv, const glint_lattice& lat, uint seed) {
     typedef real realx4 __attribute__((vector_size(4 * sizeof(real))));
     typedef int intx4 __attribute__((vector_size(16)));
     const vec2* table = glint_lattice_rotation_table();
@@ -570,25 +570,20 @@ __attribute__((noinline, target("avx2"))) static glint_draw_masks glint_skip_tes
     typedef uint u32x8 __attribute__((vector_size(32)));
     typedef int i32x8 __attribute__((vector_size(32)));
     typedef real realx8 __attribute__((vector_size(8 * sizeof(real))));
-    glint_draw_masks masks;
-    // The vertices glint_grid_skip_inputs filled (4 or 12), in zero-padded blocks of eight; copies
-    // of constant size, which compile to vector moves.
+    // The vertices glint_grid_skip_inputs filled (4 or 12) in blocks of eight read in place: 0..7,
+    // and for twelve 4..11 (its lanes 4..7 again), so that no load reads past px.word. The bits
+    // and their finish (glint_draw_masks_finish: the same values) stay in registers until one
+    // store: the copies through zero-padded stack arrays this replaced made each block's load and
+    // the finish's wait for stores of other sizes (perf: a quarter of this function's samples).
     const bool one_block = px.v.count <= 4;
-    uint words[16] = {};
-    real scales[16] = {};
-    if (one_block) {
-        std::memcpy(words, px.word, 4 * sizeof(uint));
-        std::memcpy(scales, px.skip_scale, 4 * sizeof(real));
-    } else {
-        std::memcpy(words, px.word, 12 * sizeof(uint));
-        std::memcpy(scales, px.skip_scale, 12 * sizeof(real));
-    }
-    int bits_out[16] = {};
+    const i32x8 lane = {0, 1, 2, 3, 4, 5, 6, 7};
+    const int always = skip_test ? 0 : live;
+    i32x8 block_bits[2] = {};
     for (int b = 0; b < (one_block ? 1 : 2); ++b) {
         u32x8 word;
         realx8 scale;
-        std::memcpy(&word, words + 8 * b, sizeof(word));
-        std::memcpy(&scale, scales + 8 * b, sizeof(scale));
+        std::memcpy(&word, px.word + 4 * b, sizeof(word));
+        std::memcpy(&scale, px.skip_scale + 4 * b, sizeof(scale));
         i32x8 bits = {};
         for (int j = 0; j < 4; ++j) {
             u32x8 h = word ^ corner_key[j];  // glint_hash_u32, lane-wise
@@ -601,12 +596,20 @@ __attribute__((noinline, target("avx2"))) static glint_draw_masks glint_skip_tes
             realx8 bound = scale * (corner_p[j] * real(16777216.0)) + real(167.77216);
             bits |= __builtin_convertvector(below < bound, i32x8) & (1 << j);
         }
-        std::memcpy(bits_out + 8 * b, &bits, sizeof(bits));
+        block_bits[b] = bits;
     }
-    if (one_block)
-        for (int i = 4; i < 8; ++i) bits_out[i] = 0;  // as the baseline: no bits past the vertices it tests
-    std::memcpy(masks.bits, bits_out, 12 * sizeof(int));
-    glint_draw_masks_finish(masks, px.v.count, live, skip_test);
+    // Vertex i of the first block is lane i, of the second lane i - 4. One block: no bits past
+    // the 4 vertices it tests (as the baseline), lanes 4..7 holding words it never filled.
+    i32x8 first = one_block ? (lane < 4 ? block_bits[0] : i32x8{}) : block_bits[0];
+    first = (first | always) & live;
+    const i32x8 second = (block_bits[1] | always) & live;
+    const i32x8 counted = (first & (lane < px.v.count)) | (second & (lane + 4 >= 8 && lane + 4 < px.v.count));
+    int any = 0;
+    for (int i = 0; i < 8; ++i) any |= counted[i];
+    glint_draw_masks masks;
+    std::memcpy(masks.bits, &first, sizeof(first));
+    for (int i = 8; i < 12; ++i) masks.bits[i] = second[i - 4];
+    masks.any = any;
     return masks;
 }
 #endif

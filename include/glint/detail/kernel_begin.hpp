@@ -35,6 +35,11 @@ using namespace glm;  // NOLINT: confined to glint::detail::glsl
 #define GLINT_OUT(T) T&
 // An in-out parameter (in GLSL: `inout T`).
 #define GLINT_INOUT(T) T&
+// A struct read but not written (in GLSL: `in T`, a copy): a const reference, so that C++ does
+// not copy it. Copies of structs that were just written field by field cost the CPU a wait each
+// (a wide load of narrow stores); in the IBL estimate the struct copies' waits were about a sixth
+// of glint_ibl_sample's perf samples (DEVELOPERS.md).
+#define GLINT_IN(T) const T&
 // An expression the compiler must evaluate as written (in GLSL: `precise`). C++ needs nothing:
 // the tests build with -ffp-contract=off and without -ffast-math.
 #define GLINT_PRECISE

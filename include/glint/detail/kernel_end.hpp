@@ -5,6 +5,7 @@
 #undef GLINT_FN_INLINE
 #undef GLINT_OUT
 #undef GLINT_INOUT
+#undef GLINT_IN
 #undef GLINT_CONST
 #undef GLINT_FLOAT_TABLE
 #undef GLINT_TABLE_OPEN

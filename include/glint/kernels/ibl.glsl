@@ -52,16 +52,16 @@ GLINT_FN vec2 glint_ibl_fuzzy_weight(real y, glint_ibl_levels lv, bool log_space
 
 // The per-level reflection probabilities p_k = E_D w_k / D_H (KK25 Eq. 15, 21), scaled down if they
 // sum to more than 1.
-GLINT_FN glint_multinomial_probabilities glint_ibl_probabilities(glint_ibl_levels lv, glint_ibl_indicators ind, real e_d, real d_h) {
+GLINT_FN glint_multinomial_probabilities glint_ibl_probabilities(GLINT_IN(glint_ibl_levels) lv, GLINT_IN(glint_ibl_indicators) ind, real e_d, real d_h) {
+    // Each p_k computed twice, for the sum and then scaled, rather than stored and rescaled in
+    // place: in C++ the rescaling's vector loads of the scalar stores waited for them (perf: an
+    // eighth of glint_ibl_sample's samples).
     glint_multinomial_probabilities pr;
     int K = clamp(lv.count, 3, GLINT_IBL_MAX_LEVELS);
     real total = real(0);
-    for (int k = 0; k < 8; ++k) {
-        pr.p[k] = (k < K) ? clamp(e_d * ind.w[k] / max(d_h, real(1)), real(0), real(1)) : real(0);
-        total += pr.p[k];
-    }
+    for (int k = 0; k < 8; ++k) total += (k < K) ? clamp(e_d * ind.w[k] / max(d_h, real(1)), real(0), real(1)) : real(0);
     real scale = (total > real(1)) ? real(1) / total : real(1);
-    for (int k = 0; k < 8; ++k) pr.p[k] *= scale;
+    for (int k = 0; k < 8; ++k) pr.p[k] = ((k < K) ? clamp(e_d * ind.w[k] / max(d_h, real(1)), real(0), real(1)) : real(0)) * scale;
     return pr;
 }
 
@@ -74,8 +74,8 @@ struct glint_ibl_shares {
     int draws;
 };
 
-GLINT_FN glint_ibl_shares glint_ibl_level_shares(GLINT_INOUT(glint_grid_pixel) px, glint_grid_params g, int K,
-                                                 glint_multinomial_probabilities lit) {
+GLINT_FN glint_ibl_shares glint_ibl_level_shares(GLINT_INOUT(glint_grid_pixel) px, GLINT_IN(glint_grid_params) g, int K,
+                                                 GLINT_IN(glint_multinomial_probabilities) lit) {
     glint_ibl_shares o;
     for (int k = 0; k < 8; ++k) o.share[k] = real(0);
     o.draws = 0;
@@ -131,7 +131,7 @@ GLINT_FN glint_ibl_shares glint_ibl_level_shares(GLINT_INOUT(glint_grid_pixel) p
 }
 
 // The levels above the black one as multinomial bins 0..K-2.
-GLINT_FN glint_multinomial_probabilities glint_ibl_lit_levels(glint_multinomial_probabilities all, int K) {
+GLINT_FN glint_multinomial_probabilities glint_ibl_lit_levels(GLINT_IN(glint_multinomial_probabilities) all, int K) {
     glint_multinomial_probabilities lit;
     for (int k = 0; k < 7; ++k) lit.p[k] = (k + 1 < K) ? all.p[k + 1] : real(0);
     lit.p[7] = real(0);
@@ -143,8 +143,8 @@ GLINT_FN glint_multinomial_probabilities glint_ibl_lit_levels(glint_multinomial_
 // gives the factor on the smooth result. Same grid as glint_grid_sample, without the half-vector interpolation
 // (KK25 Sec. 3.3: IBL has no single half vector). On a glint_grid_pixel, so that point lights and
 // the environment share one footprint's vertices.
-GLINT_FN glint_grid_estimate glint_ibl_sample_pixel(GLINT_INOUT(glint_grid_pixel) px, glint_grid_params g, glint_ibl_levels lv,
-                                                   glint_ibl_indicators ind, real e_d, real d_h) {
+GLINT_FN glint_grid_estimate glint_ibl_sample_pixel(GLINT_INOUT(glint_grid_pixel) px, GLINT_IN(glint_grid_params) g, GLINT_IN(glint_ibl_levels) lv,
+                                                   GLINT_IN(glint_ibl_indicators) ind, real e_d, real d_h) {
     glint_grid_estimate o;
     o.value = real(0);
     o.expected = real(0);

@@ -130,16 +130,16 @@ struct glint_multinomial_tree {
 };
 
 // K, the probabilities and their total; the q are left to glint_multinomial_tree_splits.
-GLINT_FN glint_multinomial_tree glint_multinomial_tree_root(glint_multinomial_probabilities probs, int K) {
+GLINT_FN glint_multinomial_tree glint_multinomial_tree_root(GLINT_IN(glint_multinomial_probabilities) probs, int K) {
     glint_multinomial_tree t;
     t.K = clamp(K, 2, 8);
+    // Each p_k taken twice, for the sum and then scaled, not stored and rescaled in place (in
+    // C++ the rescaling's vector loads waited for the scalar stores: kernels/ibl.glsl's
+    // glint_ibl_probabilities says more).
     real total = real(0);
-    for (int k = 0; k < 8; ++k) {
-        t.p[k] = (k < t.K) ? max(probs.p[k], real(0)) : real(0);
-        total += t.p[k];
-    }
+    for (int k = 0; k < 8; ++k) total += (k < t.K) ? max(probs.p[k], real(0)) : real(0);
     real scale = (total > real(1)) ? real(1) / total : real(1);
-    for (int k = 0; k < 8; ++k) t.p[k] *= scale;
+    for (int k = 0; k < 8; ++k) t.p[k] = ((k < t.K) ? max(probs.p[k], real(0)) : real(0)) * scale;
     t.total = min(total * scale, real(1));
     for (int h = 0; h < 7; ++h) t.q[h] = real(0.5);
     return t;
@@ -176,7 +176,7 @@ GLINT_FN void glint_multinomial_tree_splits(GLINT_INOUT(glint_multinomial_tree) 
     }
 }
 
-GLINT_FN glint_multinomial_tree glint_multinomial_make_tree(glint_multinomial_probabilities probs, int K) {
+GLINT_FN glint_multinomial_tree glint_multinomial_make_tree(GLINT_IN(glint_multinomial_probabilities) probs, int K) {
     glint_multinomial_tree t = glint_multinomial_tree_root(probs, K);
     glint_multinomial_tree_splits(t);
     return t;
@@ -259,7 +259,7 @@ struct glint_multinomial_below {
     uint mask[8];
 };
 
-GLINT_FN glint_multinomial_thresholds glint_multinomial_exact_all_thresholds(glint_multinomial_tree t) {
+GLINT_FN glint_multinomial_thresholds glint_multinomial_exact_all_thresholds(GLINT_IN(glint_multinomial_tree) t) {
     glint_multinomial_thresholds o;
     uint sum = 0u;
     bool reached = false;

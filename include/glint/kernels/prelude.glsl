@@ -10,6 +10,7 @@
 #define GLINT_FN_INLINE
 #define GLINT_OUT(T) out T
 #define GLINT_INOUT(T) inout T
+#define GLINT_IN(T) in T
 #define GLINT_CONST(T) const T
 #define GLINT_FLOAT_TABLE(name, n) const vec4 name[(n) / 4] = vec4[(n) / 4]
 #define GLINT_TABLE_OPEN (

@@ -541,7 +541,8 @@ namespace {
 // glint_lattice_triangles_x4 (C++: the four lattice points in vector lanes) against the scalar
 // path GLSL runs, glint_lattice_rotation and glint_triangle_grid one lattice point at a time, over
 // footprints of every LOD, ratio and angle at uv of magnitudes 1e-3 to 1e6, both signs.
-// Returns the lattice points compared and the number that differ in a vertex, weight or key;
+// Returns the lattice points compared and the number that differ in a vertex's weight or hash
+// (PCG3D of its cell and its lattice point's key, which C++ computes with the triangles);
 // `skew` moves the scalar path's uv by one unit in the last place (a wrong variant the comparison
 // must catch).
 template <class real>
@@ -565,9 +566,11 @@ std::pair<long, long> lattice_triangles_mismatches(bool skew) {
             const auto tri = KR::glint_triangle_grid(glm::vec<2, real>(r.x * KR::glint_exp2_int(-lat.lod[l] - lat.level[l]), r.y * KR::glint_exp2_int(-lat.lod[l])));
             const std::uint32_t key = (static_cast<std::uint32_t>(lat.lod[l] + 64) | (static_cast<std::uint32_t>(lat.level[l]) << 8u) |
                                        (static_cast<std::uint32_t>(lat.bin[l]) << 12u)) ^ seed;
-            bool same = tris.key[l] == key;
-            for (int t = 0; t < 3; ++t)
-                same = same && tris.vx[t][l] == tri.vertex[t].x && tris.vy[t][l] == tri.vertex[t].y && tris.weight[t][l] == tri.weight[t];
+            bool same = true;
+            for (int t = 0; t < 3; ++t) {
+                const glm::uvec3 h = KR::glint_pcg3d(glm::uvec3(static_cast<std::uint32_t>(tri.vertex[t].x), static_cast<std::uint32_t>(tri.vertex[t].y), key));
+                same = same && tris.hash[0][4 * t + l] == h.x && tris.hash[1][4 * t + l] == h.y && tris.hash[2][4 * t + l] == h.z && tris.weight[t][l] == tri.weight[t];
+            }
             differ += !same;
             ++points;
         }

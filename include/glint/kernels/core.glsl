@@ -39,6 +39,22 @@ static bool glint_cpu_avx2() {
 // arithmetic wraps alike; tests/unit/test_hash.cpp compares them). A pixel's grid vertices hash
 // twelve words (grid.glsl), the IBL's multinomial roots twelve more (ibl.glsl); one at a time,
 // their 32-bit multiplies lie in one chain per word.
+// glint_pcg3d lane-wise on three vectors of words (any vector width).
+template <class V>
+__attribute__((always_inline)) static inline void glint_pcg3d_vectors(V& x, V& y, V& z) {
+    x = x * 1664525u + 1013904223u;
+    y = y * 1664525u + 1013904223u;
+    z = z * 1664525u + 1013904223u;
+    x += y * z;
+    y += z * x;
+    z += x * y;
+    x ^= x >> 16u;
+    y ^= y >> 16u;
+    z ^= z >> 16u;
+    x += y * z;
+    y += z * x;
+    z += x * y;
+}
 template <int W>
 __attribute__((always_inline)) static inline void glint_pcg3d_lanes(uvec3 words[12], int count) {
     typedef uint u32x4 __attribute__((vector_size(16)));
@@ -48,18 +64,7 @@ __attribute__((always_inline)) static inline void glint_pcg3d_lanes(uvec3 words[
         u32xw x = {}, y = {}, z = {};
         for (int v = 0; v < W; ++v)
             if (base + v < count) x[v] = words[base + v].x, y[v] = words[base + v].y, z[v] = words[base + v].z;
-        x = x * 1664525u + 1013904223u;
-        y = y * 1664525u + 1013904223u;
-        z = z * 1664525u + 1013904223u;
-        x += y * z;
-        y += z * x;
-        z += x * y;
-        x ^= x >> 16u;
-        y ^= y >> 16u;
-        z ^= z >> 16u;
-        x += y * z;
-        y += z * x;
-        z += x * y;
+        glint_pcg3d_vectors(x, y, z);
         for (int v = 0; v < W; ++v)
             if (base + v < count) words[base + v] = uvec3(x[v], y[v], z[v]);
     }

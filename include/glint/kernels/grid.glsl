@@ -199,11 +199,50 @@ GLINT_FN uint glint_lattice_key(int lod, int level, int bin, uint seed) {
 // alone (a branch each, its direction a coin toss) drew 15% of glint_footprint_vertices' perf
 // samples in glint_frame_loop point; in lanes the point frame took 4% less time (DEVELOPERS.md).
 struct glint_lattice_triangles {
-    int vx[3][4];     // vertex t of lattice point l: (vx[t][l], vy[t][l])
-    int vy[3][4];
-    real weight[3][4];
-    uint key[4];      // the lattice point's key (its lod, level and bin, and the seed)
+    real weight[3][4];  // of vertex t of lattice point l
+    uint hash[3][12];   // PCG3D of vertex t of lattice point l, its cell (x, y) and its lattice
+                        // point's key: word c at hash[c][4 t + l]
 };
+
+// The twelve vertices' PCG3D words from their cells' coordinates, four lattice points a vector
+// per triangle vertex t, and the lattice points' keys: out[c][4 t + l]. Hashed here, from the
+// vectors the triangles are computed in, rather than gathered from the compacted vertex array
+// (glint_pcg3d_many): the gather's inserts and its loads of words stored one by one drew most of
+// glint_pcg3d_many_x8's perf samples in the point-light frame. Eight and four lanes in AVX2
+// registers where the CPU has them; the baseline one vertex at a time (SSE2 emulates the 32-bit
+// multiply: core.glsl's glint_pcg3d_many). The same words as glint_pcg3d.
+typedef uint glint_u32x4 __attribute__((vector_size(16)));
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(GLINT_NO_AVX2)
+__attribute__((noinline, target("avx2"))) static void glint_lattice_vertex_hashes_x8(glint_u32x4 x0, glint_u32x4 x1, glint_u32x4 x2, glint_u32x4 y0,
+                                                                                    glint_u32x4 y1, glint_u32x4 y2, glint_u32x4 key,
+                                                                                    uint out[3][12]) {
+    typedef uint u32x8 __attribute__((vector_size(32)));
+    u32x8 x = __builtin_shufflevector(x0, x1, 0, 1, 2, 3, 4, 5, 6, 7);
+    u32x8 y = __builtin_shufflevector(y0, y1, 0, 1, 2, 3, 4, 5, 6, 7);
+    u32x8 z = __builtin_shufflevector(key, key, 0, 1, 2, 3, 4, 5, 6, 7);
+    glint_u32x4 x4 = x2, y4 = y2, z4 = key;
+    glint_pcg3d_vectors(x, y, z);
+    glint_pcg3d_vectors(x4, y4, z4);
+    std::memcpy(out[0], &x, sizeof(x)), std::memcpy(out[0] + 8, &x4, sizeof(x4));
+    std::memcpy(out[1], &y, sizeof(y)), std::memcpy(out[1] + 8, &y4, sizeof(y4));
+    std::memcpy(out[2], &z, sizeof(z)), std::memcpy(out[2] + 8, &z4, sizeof(z4));
+}
+#endif
+GLINT_FN_INLINE void glint_lattice_vertex_hashes(glint_u32x4 x0, glint_u32x4 x1, glint_u32x4 x2, glint_u32x4 y0, glint_u32x4 y1, glint_u32x4 y2,
+                                                 glint_u32x4 key, uint out[3][12]) {
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(GLINT_NO_AVX2)
+    if (glint_cpu_avx2()) {
+        glint_lattice_vertex_hashes_x8(x0, x1, x2, y0, y1, y2, key, out);
+        return;
+    }
+#endif
+    const glint_u32x4 xs[3] = {x0, x1, x2}, ys[3] = {y0, y1, y2};
+    for (int t = 0; t < 3; ++t)
+        for (int l = 0; l < 4; ++l) {
+            const uvec3 h = glint_pcg3d(uvec3(xs[t][l], ys[t][l], key[l]));
+            out[0][4 * t + l] = h.x, out[1][4 * t + l] = h.y, out[2][4 * t + l] = h.z;
+        }
+}
 
 GLINT_FN_INLINE const vec2* glint_lattice_rotation_table() {
     static const struct table {
@@ -247,13 +286,13 @@ GLINT_FN_INLINE glint_lattice_triangles glint_lattice_triangles_x4(vec2 uv, cons
     const realx4 uf = __builtin_convertvector(u, realx4);
     const realx4 w0 = real(1) - fx - fy, w1 = uf - fx, w2 = uf - fy;
     glint_lattice_triangles o;
-    for (int l = 0; l < 4; ++l) {
-        o.vx[0][l] = bx[l] + u[l], o.vy[0][l] = by[l] + u[l];
-        o.vx[1][l] = bx[l] + 1 - u[l], o.vy[1][l] = by[l] + u[l];
-        o.vx[2][l] = bx[l] + u[l], o.vy[2][l] = by[l] + 1 - u[l];
-        o.weight[0][l] = glint_abs(w0[l]), o.weight[1][l] = glint_abs(w1[l]), o.weight[2][l] = glint_abs(w2[l]);
-        o.key[l] = glint_lattice_key(lat.lod[l], lat.level[l], lat.bin[l], seed);
-    }
+    for (int l = 0; l < 4; ++l) o.weight[0][l] = glint_abs(w0[l]), o.weight[1][l] = glint_abs(w1[l]), o.weight[2][l] = glint_abs(w2[l]);
+    // Vertex 0: base + (u, u); 1: base + (1 - u, u); 2: base + (u, 1 - u) (glint_triangle_grid).
+    const glint_u32x4 x0 = reinterpret_cast<glint_u32x4>(bx + u), x1 = reinterpret_cast<glint_u32x4>(bx + 1 - u);
+    const glint_u32x4 y0 = reinterpret_cast<glint_u32x4>(by + u), y2 = reinterpret_cast<glint_u32x4>(by + 1 - u);
+    const glint_u32x4 key = {glint_lattice_key(lat.lod[0], lat.level[0], lat.bin[0], seed), glint_lattice_key(lat.lod[1], lat.level[1], lat.bin[1], seed),
+                             glint_lattice_key(lat.lod[2], lat.level[2], lat.bin[2], seed), glint_lattice_key(lat.lod[3], lat.level[3], lat.bin[3], seed)};
+    glint_lattice_vertex_hashes(x0, x1, x0, y0, y0, y2, key, o.hash);
     return o;
 }
 #endif
@@ -384,19 +423,16 @@ GLINT_FN glint_grid_vertices glint_footprint_vertices(vec2 uv, glint_footprint f
             if (!(wt > real(0))) continue;
             v.weight[v.count] = wt;
             v.share[v.count] = wl;
-            v.hash[v.count] = uvec3(uint(tris.vx[t][l]), uint(tris.vy[t][l]), tris.key[l]);  // hashed below
+            v.hash[v.count] = uvec3(tris.hash[0][4 * t + l], tris.hash[1][4 * t + l], tris.hash[2][4 * t + l]);  // hashed with the triangles
             ++v.count;
         }
 #endif
     }
-    // Each vertex's hash: PCG3D of its cell and lattice key. C++ hashes the pixel's vertices
-    // together, eight at a time in AVX2 registers where the CPU has them (glint_pcg3d_many, the
-    // same words).
+    // Each vertex's hash: PCG3D of its cell and lattice key (C++: glint_lattice_vertex_hashes,
+    // every lattice point's vertices with the triangles, the same words).
 #if defined(GLINT_GLSL)
     for (int i = 0; i < 12; ++i)
         if (i < v.count) v.hash[i] = glint_pcg3d(v.hash[i]);
-#else
-    glint_pcg3d_many(v.hash, v.count);
 #endif
     if (g.density_sigma > real(0))
         for (int i = 0; i < 12; ++i)

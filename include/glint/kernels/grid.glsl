@@ -620,6 +620,8 @@ __attribute__((noinline, target("avx2"))) static glint_draw_masks glint_skip_tes
         realx8 scale;
         std::memcpy(&word, px.word + 4 * b, sizeof(word));
         std::memcpy(&scale, px.skip_scale + 4 * b, sizeof(scale));
+        if (one_block)  // lanes 4..7: words glint_grid_skip_inputs did not fill, kept out of the arithmetic
+            for (int i = 4; i < 8; ++i) word[i] = 0u, scale[i] = real(0);
         i32x8 bits = {};
         for (int j = 0; j < 4; ++j) {
             u32x8 h = word ^ corner_key[j];  // glint_hash_u32, lane-wise
@@ -635,7 +637,7 @@ __attribute__((noinline, target("avx2"))) static glint_draw_masks glint_skip_tes
         block_bits[b] = bits;
     }
     // Vertex i of the first block is lane i, of the second lane i - 4. One block: no bits past
-    // the 4 vertices it tests (as the baseline), lanes 4..7 holding words it never filled.
+    // the 4 vertices it tests (as the baseline).
     i32x8 first = one_block ? (lane < 4 ? block_bits[0] : i32x8{}) : block_bits[0];
     first = (first | always) & live;
     const i32x8 second = (block_bits[1] | always) & live;

@@ -34,12 +34,8 @@ static bool glint_cpu_avx2() {
 #endif
 }
 
-// C++ only: glint_pcg3d of words[0 .. count - 1] (count <= 12) in place, W at once in vector
-// registers (GCC's and Clang's vector extension): the same words, bit for bit (unsigned
-// arithmetic wraps alike; tests/unit/test_hash.cpp compares them). A pixel's grid vertices hash
-// twelve words (grid.glsl), the IBL's multinomial roots twelve more (ibl.glsl); one at a time,
-// their 32-bit multiplies lie in one chain per word.
-// glint_pcg3d lane-wise on three vectors of words (any vector width).
+// C++ only: glint_pcg3d lane-wise on three vectors of words (any vector width of GCC's and
+// Clang's vector extension): the same words, bit for bit (unsigned arithmetic wraps alike).
 template <class V>
 __attribute__((always_inline)) static inline void glint_pcg3d_vectors(V& x, V& y, V& z) {
     x = x * 1664525u + 1013904223u;
@@ -55,6 +51,11 @@ __attribute__((always_inline)) static inline void glint_pcg3d_vectors(V& x, V& y
     y += z * x;
     z += x * y;
 }
+// C++ only: glint_pcg3d of words[0 .. count - 1] (count <= 12) in place, W at once in vector
+// registers (tests/unit/test_hash.cpp compares them with glint_pcg3d). The IBL's multinomial roots
+// hash a pixel's twelve vertex words (ibl.glsl; the grid hashes its vertices with their triangles,
+// grid.glsl's glint_lattice_vertex_hashes); one at a time, their 32-bit multiplies lie in one
+// chain per word.
 template <int W>
 __attribute__((always_inline)) static inline void glint_pcg3d_lanes(uvec3 words[12], int count) {
     typedef uint u32x4 __attribute__((vector_size(16)));

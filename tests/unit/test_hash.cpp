@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <cstring>
 #include <string>
 #include <unordered_set>
 #include <vector>
@@ -48,27 +49,35 @@ TEST_CASE("pcg3d matches an independent word-by-word implementation on 1e6 input
 }
 
 // C++'s batched PCG3D (glint_pcg3d_many: a pixel's grid vertices four or eight at a time in
-// vector registers) against the reference, every count from 0 to 12, words past the count left
-// as they were.
+// vector registers, from three arrays into three others) against the reference, every count from 0
+// to 12; outputs past the count either left as they were or hashed (a block of lanes hashes them all).
 template <class Many>
 void check_pcg3d_many(Many many) {
     long words = 0, differ = 0;
     std::uint32_t state = 99u;
     for (int round = 0; round < 20000; ++round) {
         const int count = round % 13;
-        glm::uvec3 w[12];
+        std::uint32_t x[12], y[12], z[12];
         std::uint32_t ref[12][3];
         for (int i = 0; i < 12; ++i) {
             for (int c = 0; c < 3; ++c) {
                 state = state * 747796405u + 2891336453u;
                 ref[i][c] = (round % 3 == 0) ? (state >> 24) : state;  // small counters and scrambled words
             }
-            w[i] = glm::uvec3(ref[i][0], ref[i][1], ref[i][2]);
+            x[i] = ref[i][0], y[i] = ref[i][1], z[i] = ref[i][2];
             if (i < count) pcg3d_reference(ref[i][0], ref[i][1], ref[i][2]);
         }
-        many(w, count);
+        std::uint32_t hx[12], hy[12], hz[12];
+        std::memcpy(hx, x, sizeof(x)), std::memcpy(hy, y, sizeof(y)), std::memcpy(hz, z, sizeof(z));
+        many(x, y, z, count, hx, hy, hz);
         for (int i = 0; i < 12; ++i) {
-            differ += w[i].x != ref[i][0] || w[i].y != ref[i][1] || w[i].z != ref[i][2];
+            bool same = hx[i] == ref[i][0] && hy[i] == ref[i][1] && hz[i] == ref[i][2];
+            if (i >= count && !same) {  // past the count: hashed with its block
+                std::uint32_t h[3] = {ref[i][0], ref[i][1], ref[i][2]};
+                pcg3d_reference(h[0], h[1], h[2]);
+                same = hx[i] == h[0] && hy[i] == h[1] && hz[i] == h[2];
+            }
+            differ += !same;
             ++words;
         }
     }
@@ -79,13 +88,15 @@ void check_pcg3d_many(Many many) {
 
 TEST_CASE("C++'s batched pcg3d (four or eight words at once) equals the reference word by word") {
     using K = glint::detail::glsl::kernels<float>;
+    using u32 = std::uint32_t;
     // Eight words at once compiled for the baseline target (two vectors of four), on any CPU...
-    check_pcg3d_many([](glm::uvec3* w, int n) { K::glint_pcg3d_lanes<8>(w, n); });
+    check_pcg3d_many([](const u32* x, const u32* y, const u32* z, int n, u32* hx, u32* hy, u32* hz) { K::glint_pcg3d_lanes<8>(x, y, z, n, hx, hy, hz); });
     // ... and for AVX2 (GCC on x86-64), run where the CPU has it, as glint_pcg3d_many runs it;
     // elsewhere glint_pcg3d_many hashes one word at a time.
     MESSAGE("eight words at once with AVX2: " << std::string(K::glint_cpu_avx2() ? "run" : "not run (a CPU without AVX2, or a build without the AVX2 path)"));
-    if (K::glint_cpu_avx2()) check_pcg3d_many([](glm::uvec3* w, int n) { K::glint_pcg3d_many_x8(w, n); });
-    check_pcg3d_many([](glm::uvec3* w, int n) { K::glint_pcg3d_many(w, n); });
+    if (K::glint_cpu_avx2())
+        check_pcg3d_many([](const u32* x, const u32* y, const u32* z, int n, u32* hx, u32* hy, u32* hz) { K::glint_pcg3d_many_x8(x, y, z, n, hx, hy, hz); });
+    check_pcg3d_many([](const u32* x, const u32* y, const u32* z, int n, u32* hx, u32* hy, u32* hz) { K::glint_pcg3d_many(x, y, z, n, hx, hy, hz); });
 }
 
 TEST_CASE("pcg3d is injective on a 2^16-point lattice of counters") {

@@ -51,23 +51,34 @@ __attribute__((always_inline)) static inline void glint_pcg3d_vectors(V& x, V& y
     y += z * x;
     z += x * y;
 }
-// C++ only: glint_pcg3d of words[0 .. count - 1] (count <= 12) in place, W at once in vector
+// C++ only: glint_pcg3d of the words (x[i], y[i], z[i]), i < count <= 12, into (hx[i], hy[i],
+// hz[i]) (and of others up to the end of their block of W or of the twelve), W at once in vector
 // registers (tests/unit/test_hash.cpp compares them with glint_pcg3d). The IBL's multinomial roots
 // hash a pixel's twelve vertex words (ibl.glsl; the grid hashes its vertices with their triangles,
 // grid.glsl's glint_lattice_vertex_hashes); one at a time, their 32-bit multiplies lie in one
-// chain per word.
+// chain per word. Three arrays, as glint_grid_vertices holds the words, read in place: lanes
+// loaded whole (an array of uvec3 was gathered lane by lane), from words not just stored one by
+// one (a vector load of those waits for the stores).
 template <int W>
-__attribute__((always_inline)) static inline void glint_pcg3d_lanes(uvec3 words[12], int count) {
+__attribute__((always_inline)) static inline void glint_pcg3d_lanes(const uint x[12], const uint y[12], const uint z[12], int count, uint hx[12],
+                                                                   uint hy[12], uint hz[12]) {
     typedef uint u32x4 __attribute__((vector_size(16)));
     typedef uint u32x8 __attribute__((vector_size(32)));
     typedef typename std::conditional<W == 8, u32x8, u32x4>::type u32xw;
-    for (int base = 0; base < count; base += W) {
-        u32xw x = {}, y = {}, z = {};
-        for (int v = 0; v < W; ++v)
-            if (base + v < count) x[v] = words[base + v].x, y[v] = words[base + v].y, z[v] = words[base + v].z;
-        glint_pcg3d_vectors(x, y, z);
-        for (int v = 0; v < W; ++v)
-            if (base + v < count) words[base + v] = uvec3(x[v], y[v], z[v]);
+    // Whole blocks of W, and the last four of twelve in a vector of four: loads and stores of
+    // constant size.
+    int base = 0;
+    for (; base + W <= 12 && base < count; base += W) {
+        u32xw vx, vy, vz;
+        std::memcpy(&vx, x + base, sizeof(vx)), std::memcpy(&vy, y + base, sizeof(vy)), std::memcpy(&vz, z + base, sizeof(vz));
+        glint_pcg3d_vectors(vx, vy, vz);
+        std::memcpy(hx + base, &vx, sizeof(vx)), std::memcpy(hy + base, &vy, sizeof(vy)), std::memcpy(hz + base, &vz, sizeof(vz));
+    }
+    if (base < count) {  // W = 8: words 8 .. 11
+        u32x4 vx, vy, vz;
+        std::memcpy(&vx, x + base, sizeof(vx)), std::memcpy(&vy, y + base, sizeof(vy)), std::memcpy(&vz, z + base, sizeof(vz));
+        glint_pcg3d_vectors(vx, vy, vz);
+        std::memcpy(hx + base, &vx, sizeof(vx)), std::memcpy(hy + base, &vy, sizeof(vy)), std::memcpy(hz + base, &vz, sizeof(vz));
     }
 }
 
@@ -81,17 +92,20 @@ __attribute__((noinline, target("avx2"))) static
 #else
 __attribute__((noinline)) static
 #endif
-void glint_pcg3d_many_x8(uvec3 words[12], int count) {
-    glint_pcg3d_lanes<8>(words, count);
+void glint_pcg3d_many_x8(const uint x[12], const uint y[12], const uint z[12], int count, uint hx[12], uint hy[12], uint hz[12]) {
+    glint_pcg3d_lanes<8>(x, y, z, count, hx, hy, hz);
 }
 
-GLINT_FN void glint_pcg3d_many(uvec3 words[12], int count) {
+GLINT_FN void glint_pcg3d_many(const uint x[12], const uint y[12], const uint z[12], int count, uint hx[12], uint hy[12], uint hz[12]) {
     if (glint_cpu_avx2()) {
-        glint_pcg3d_many_x8(words, count);
+        glint_pcg3d_many_x8(x, y, z, count, hx, hy, hz);
         return;
     }
     for (int i = 0; i < 12; ++i)
-        if (i < count) words[i] = glint_pcg3d(words[i]);
+        if (i < count) {
+            uvec3 h = glint_pcg3d(uvec3(x[i], y[i], z[i]));
+            hx[i] = h.x, hy[i] = h.y, hz[i] = h.z;
+        }
 }
 #endif
 
@@ -461,9 +475,9 @@ GLINT_FN real glint_atan2(real y, real x) {
     real hi = max(ax, ay), lo = min(ax, ay);
     if (!(hi > real(0)) || !(hi < real(3.4e38))) return real(0);
     real t = lo / hi;
-    // One series, on t or on its reduction (selected, not branched: the choice is a coin toss per
-    // pixel, and the series computed for t and then again for the reduction cost a point-light
-    // frame's footprint twice its latency).
+    // One series, on t or on its reduction, selected: the choice is a coin toss per pixel, and
+    // where t > tan(pi / 12) the series was computed for t and then again for the reduction, twice
+    // the latency on the point-light frame's footprint.
     bool reduce = t > real(0.267949192431122706473);  // tan(pi / 12) = 2 - sqrt(3), 21 digits
     real c = real(0.577350269189625764509);           // 1 / sqrt(3), 21 digits
     real r = reduce ? (t - c) / (real(1) + t * c) : t;

@@ -358,16 +358,28 @@ GLINT_FN uint glint_cell_draw_second_word(uint first_word, uint vertex_second_wo
     return glint_hash_u32(first_word ^ vertex_second_word);
 }
 
-// The footprint's microfacets on the grid: up to 12 (lattice point, triangle vertex) pairs, each
-// with its triangle weight l_t, its share of the footprint's N microfacets (w_L, times the
-// per-vertex log-normal factor if enabled) and its hashed random numbers. Shared by the
-// single-light estimate below and the multi-level one of ibl.glsl.
+// The footprint's microfacets on the grid: 12 (lattice point, triangle vertex) pairs, each with
+// its triangle weight l_t, its share of the footprint's N microfacets (w_L, times the per-vertex
+// log-normal factor if enabled) and its hashed random numbers (PCG3D, three words). Shared by the
+// single-light estimate below and the multi-level one of ibl.glsl. Slot 4 t + l holds triangle
+// vertex t of lattice point l, or slot t alone (count 3) where one lattice point is chosen; a slot
+// whose lattice point or triangle vertex has weight 0 holds no vertex: weight and share 0, and no
+// draw. Fixed slots rather than the present vertices packed: in C++ the arrays are copies of the
+// lattice lanes' (glint_lattice_triangles_x4), where packing them vertex by vertex was 6% of the
+// point-light frame's instructions (DEVELOPERS.md).
 struct glint_grid_vertices {
-    int count;
+    int count;  // 12, or 3 on one lattice point
     real weight[12];
     real share[12];
-    uvec3 hash[12];
+    uint hash_x[12];  // the words, one array each: the skip test reads hash_x in place
+    uint hash_y[12];
+    uint hash_z[12];
 };
+
+// Slot i's three words.
+GLINT_FN uvec3 glint_grid_vertex_hash(GLINT_IN(glint_grid_vertices) v, int i) {
+    return uvec3(v.hash_x[i], v.hash_y[i], v.hash_z[i]);
+}
 
 // lattice_u < 0: every lattice point with its weight w_L (DB23, KK25). lattice_u in [0, 1): one
 // lattice point, drawn with probability w_L by inverting their cumulative weights at lattice_u,
@@ -385,59 +397,71 @@ GLINT_FN int glint_lattice_choice(glint_lattice lat, real lattice_u) {
 
 GLINT_FN glint_grid_vertices glint_footprint_vertices(vec2 uv, glint_footprint f, glint_grid_params g, real lattice_u) {
     glint_grid_vertices v;
-    v.count = 0;
+    glint_lattice lat = glint_footprint_lattice(f, g.lod_scale);
+    int chosen = (lattice_u >= real(0)) ? glint_lattice_choice(lat, lattice_u) : -1;
+    v.count = (chosen >= 0) ? 3 : 12;
+#if defined(GLINT_GLSL)
     for (int i = 0; i < 12; ++i) {
         v.weight[i] = real(0);
         v.share[i] = real(0);
-        v.hash[i] = uvec3(0u);
+        v.hash_x[i] = 0u;
+        v.hash_y[i] = 0u;
+        v.hash_z[i] = 0u;
     }
-    glint_lattice lat = glint_footprint_lattice(f, g.lod_scale);
-    int chosen = (lattice_u >= real(0)) ? glint_lattice_choice(lat, lattice_u) : -1;
-#if !defined(GLINT_GLSL)
-    glint_lattice_triangles tris = glint_lattice_triangles_x4(uv, lat, g.seed);
-#endif
     for (int l = 0; l < 4; ++l) {
-        real wl = lat.weight[l];
-        if (!(wl > real(0))) continue;
-        if (chosen >= 0) {
-            if (l != chosen) continue;
-            wl = real(1);
-        }
-#if defined(GLINT_GLSL)
+        if (chosen >= 0 && l != chosen) continue;
+        real wl = (chosen >= 0) ? real(1) : lat.weight[l];  // the chosen point draws with the whole N
+        if (!(lat.weight[l] > real(0))) continue;
         vec2 rot = glint_lattice_rotation(lat.level[l], lat.bin[l]);
         vec2 r = vec2(rot.x * uv.x + rot.y * uv.y, -rot.y * uv.x + rot.x * uv.y);
         // Cells 2^lod by 2^(lod + level): exact power-of-two scalings.
         glint_triangle tri = glint_triangle_grid(vec2(r.x * glint_exp2_int(-lat.lod[l] - lat.level[l]), r.y * glint_exp2_int(-lat.lod[l])));
         uint lattice_key = glint_lattice_key(lat.lod[l], lat.level[l], lat.bin[l], g.seed);
         for (int t = 0; t < 3; ++t) {
-            real wt = tri.weight[t];
-            if (!(wt > real(0))) continue;
-            v.weight[v.count] = wt;
-            v.share[v.count] = wl;
-            v.hash[v.count] = uvec3(uint(tri.vertex[t].x), uint(tri.vertex[t].y), lattice_key);  // hashed below
-            ++v.count;
+            int slot = (chosen >= 0) ? t : 4 * t + l;
+            bool on = tri.weight[t] > real(0);
+            v.weight[slot] = on ? tri.weight[t] : real(0);
+            v.share[slot] = on ? wl : real(0);
+            uvec3 h = glint_pcg3d(uvec3(uint(tri.vertex[t].x), uint(tri.vertex[t].y), lattice_key));
+            v.hash_x[slot] = h.x;
+            v.hash_y[slot] = h.y;
+            v.hash_z[slot] = h.z;
         }
-#else
-        for (int t = 0; t < 3; ++t) {
-            real wt = tris.weight[t][l];
-            if (!(wt > real(0))) continue;
-            v.weight[v.count] = wt;
-            v.share[v.count] = wl;
-            v.hash[v.count] = uvec3(tris.hash[0][4 * t + l], tris.hash[1][4 * t + l], tris.hash[2][4 * t + l]);  // hashed with the triangles
-            ++v.count;
-        }
-#endif
     }
-    // Each vertex's hash: PCG3D of its cell and lattice key (C++: glint_lattice_vertex_hashes,
-    // every lattice point's vertices with the triangles, the same words).
-#if defined(GLINT_GLSL)
-    for (int i = 0; i < 12; ++i)
-        if (i < v.count) v.hash[i] = glint_pcg3d(v.hash[i]);
+#else
+    // Every lattice point's triangle and vertex words in lanes (the same values as the GLSL loop).
+    glint_lattice_triangles tris = glint_lattice_triangles_x4(uv, lat, g.seed);
+    if (chosen < 0) {
+        typedef real realx4 __attribute__((vector_size(4 * sizeof(real))));
+        const realx4 wl = {lat.weight[0], lat.weight[1], lat.weight[2], lat.weight[3]};
+        for (int t = 0; t < 3; ++t) {  // slots 4 t .. 4 t + 3, four lanes at once
+            realx4 wt;
+            std::memcpy(&wt, tris.weight[t], sizeof(wt));
+            const auto on = (wt > real(0)) & (wl > real(0));
+            const realx4 weight = on ? wt : realx4{}, share = on ? wl : realx4{};
+            std::memcpy(v.weight + 4 * t, &weight, sizeof(weight));
+            std::memcpy(v.share + 4 * t, &share, sizeof(share));
+        }
+        std::memcpy(v.hash_x, tris.hash[0], sizeof(v.hash_x));
+        std::memcpy(v.hash_y, tris.hash[1], sizeof(v.hash_y));
+        std::memcpy(v.hash_z, tris.hash[2], sizeof(v.hash_z));
+    } else {
+        for (int i = 0; i < 12; ++i) {
+            real wt = (i < 3) ? tris.weight[i][chosen] : real(0);
+            bool on = wt > real(0);
+            int lane = (i < 3) ? 4 * i + chosen : 0;
+            v.weight[i] = on ? wt : real(0);
+            v.share[i] = on ? real(1) : real(0);
+            v.hash_x[i] = (i < 3) ? tris.hash[0][lane] : 0u;
+            v.hash_y[i] = (i < 3) ? tris.hash[1][lane] : 0u;
+            v.hash_z[i] = (i < 3) ? tris.hash[2][lane] : 0u;
+        }
+    }
 #endif
     if (g.density_sigma > real(0))
         for (int i = 0; i < 12; ++i)
             if (i < v.count)
-                v.share[i] *= exp(g.density_sigma * glint_normal_quantile(glint_open_unit_from_bits(v.hash[i].z)) - real(0.5) * g.density_sigma * g.density_sigma);
+                v.share[i] *= exp(g.density_sigma * glint_normal_quantile(glint_open_unit_from_bits(v.hash_z[i])) - real(0.5) * g.density_sigma * g.density_sigma);
     return v;
 }
 
@@ -484,8 +508,7 @@ struct glint_grid_pixel {
     bool ready;  // whether v holds the vertices
     glint_grid_vertices v;
     real skip_scale[12];  // T 1.0001 per vertex, T = glint_binomial_trials_bound(N share): the skip test's bound over p, less 1e-5
-    uint word[12];        // v.hash[i].x, contiguous for glint_skip_test_masks (read in place: 1743
-                          // instead of 1720 instructions per extra light, glint_frame_loop lights)
+                          // (0 for a slot without a vertex)
 };
 
 GLINT_FN glint_grid_pixel glint_grid_pixel_setup(vec2 uv, vec2 duvdx, vec2 duvdy, glint_grid_params g) {
@@ -517,12 +540,10 @@ GLINT_FN glint_grid_pixel glint_grid_pixel_setup_stochastic(vec2 uv, vec2 duvdx,
     return px;
 }
 
-// The skip test's per-vertex bound and word for the first `vertices` vertices.
+// The skip test's per-vertex bound for the first `vertices` slots.
 GLINT_FN void glint_grid_skip_inputs(GLINT_INOUT(glint_grid_pixel) px, int vertices) {
-    for (int i = 0; i < vertices; ++i) {
-        px.skip_scale[i] = glint_binomial_trials_bound(px.N * px.v.share[i]) * real(1.0001);
-        px.word[i] = px.v.hash[i].x;
-    }
+    for (int i = 0; i < vertices; ++i)
+        px.skip_scale[i] = glint_binomial_trials_bound(px.N * px.v.share[i]) * ((px.v.weight[i] > real(0)) ? real(1.0001) : real(0));
 }
 
 GLINT_FN void glint_grid_pixel_vertices(GLINT_INOUT(glint_grid_pixel) px, glint_grid_params g) {
@@ -558,7 +579,7 @@ GLINT_FN_INLINE void glint_skip_test_bits(GLINT_INOUT(glint_grid_pixel) px, GLIN
         real p24 = corner_p[j] * real(16777216.0);  // 2^24
         uint key = corner_key[j];
         for (int i = 0; i < vertices; ++i) {
-            uint word = glint_hash_u32(px.word[i] ^ key);
+            uint word = glint_hash_u32(px.v.hash_x[i] ^ key);
             masks.bits[i] |= ((real(int(word >> 8u)) < px.skip_scale[i] * p24 + real(167.77216)) ? 1 : 0) << j;  // 1e-5 2^24
         }
     }
@@ -607,7 +628,7 @@ __attribute__((noinline, target("avx2"))) static glint_draw_masks glint_skip_tes
     typedef int i32x8 __attribute__((vector_size(32)));
     typedef real realx8 __attribute__((vector_size(8 * sizeof(real))));
     // The vertices glint_grid_skip_inputs filled (4 or 12) in blocks of eight read in place: 0..7,
-    // and for twelve 4..11 (its lanes 4..7 again), so that no load reads past px.word. The bits
+    // and for twelve 4..11 (its lanes 4..7 again), so that no load reads past px.v.hash_x. The bits
     // and their finish (glint_draw_masks_finish: the same values) stay in registers until one
     // store: the copies through zero-padded stack arrays this replaced made each block's load and
     // the finish's wait for stores of other sizes (perf: a quarter of this function's samples).
@@ -618,7 +639,7 @@ __attribute__((noinline, target("avx2"))) static glint_draw_masks glint_skip_tes
     for (int b = 0; b < (one_block ? 1 : 2); ++b) {
         u32x8 word;
         realx8 scale;
-        std::memcpy(&word, px.word + 4 * b, sizeof(word));
+        std::memcpy(&word, px.v.hash_x + 4 * b, sizeof(word));
         std::memcpy(&scale, px.skip_scale + 4 * b, sizeof(scale));
         if (one_block)  // lanes 4..7: words glint_grid_skip_inputs did not fill, kept out of the arithmetic
             for (int i = 4; i < 8; ++i) word[i] = 0u, scale[i] = real(0);
@@ -721,10 +742,11 @@ GLINT_FN glint_grid_estimate glint_grid_sample_pixel(GLINT_INOUT(glint_grid_pixe
     glint_binomial_cache cache[4];
     for (int j = 0; j < 4; ++j) cache[j] = glint_binomial_empty_cache();
     for (int i = 0; i < px.v.count; ++i) {
-        if (masks.bits[i] == 0) continue;
+        // A slot without a vertex (skip_scale 0) passes the skip test only where u1 < 1e-5: never drawn.
+        if (masks.bits[i] == 0 || !(px.v.weight[i] > real(0))) continue;
         real n = N * px.v.share[i];
-        uint hx = px.v.hash[i].x;
-        uint hy = px.v.hash[i].y;
+        uint hx = px.v.hash_x[i];
+        uint hy = px.v.hash_y[i];
         for (int j = 0; j < 4; ++j) {
             if (((masks.bits[i] >> j) & 1) == 0) continue;
             uint h1 = glint_cell_draw_word(hx, corner_key[j]);

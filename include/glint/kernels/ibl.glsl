@@ -98,16 +98,16 @@ GLINT_FN glint_ibl_shares glint_ibl_level_shares(GLINT_INOUT(glint_grid_pixel) p
     // glint_multinomial_draw vertex by vertex, as GLSL does it, summed in another order.
     bool in_batch[12];
     real batch_N[12];
-    uvec3 batch_words[12];
+    uint root_x[12], root_y[12], root_z[12];  // glint_multinomial_node_words(hash, 0) = PCG3D(hash), every vertex together
     for (int i = 0; i < 12; ++i) {
         batch_N[i] = N * px.v.share[i];
-        in_batch[i] = i < px.v.count && glint_multinomial_exact_all_applies(batch_N[i], tree.total, g.variant);
-        batch_words[i] = px.v.hash[i];
+        in_batch[i] = i < px.v.count && px.v.weight[i] > real(0) && glint_multinomial_exact_all_applies(batch_N[i], tree.total, g.variant);
     }
-    glint_pcg3d_many(batch_words, px.v.count);  // glint_multinomial_node_words(hash, 0) = PCG3D(hash), every vertex together
-    glint_multinomial_exact_all_weighted(tree, px.v.count, batch_N, batch_words, in_batch, px.v.weight, weighted);
+    glint_pcg3d_many(px.v.hash_x, px.v.hash_y, px.v.hash_z, px.v.count, root_x, root_y, root_z);
+    glint_multinomial_exact_all_weighted(tree, px.v.count, batch_N, root_x, root_y, root_z, in_batch, px.v.weight, weighted);
 #endif
     for (int i = 0; i < px.v.count; ++i) {
+        if (!(px.v.weight[i] > real(0))) continue;  // a slot without a vertex
 #if !defined(GLINT_GLSL)
         if (in_batch[i]) {
             o.draws += K - 1;  // N total >= 1 there: the skip test below never fires
@@ -117,12 +117,12 @@ GLINT_FN glint_ibl_shares glint_ibl_level_shares(GLINT_INOUT(glint_grid_pixel) p
         // The multinomial's root draws the lit levels against the rest with these uniforms: if
         // it surely draws none, every count is 0 (glint_surely_no_success).
 #if defined(GLINT_GLSL)
-        uvec3 root_words = glint_multinomial_node_words(px.v.hash[i], 0);
+        uvec3 root_words = glint_multinomial_node_words(glint_grid_vertex_hash(px.v, i), 0);
 #else
-        uvec3 root_words = batch_words[i];  // hashed with the batch
+        uvec3 root_words = uvec3(root_x[i], root_y[i], root_z[i]);  // hashed with the batch
 #endif
         if (skip_test && glint_surely_no_success_scaled(px.skip_scale[i], min(lit_total, real(1)), glint_open_unit_from_bits(root_words.x))) continue;
-        glint_multinomial_counts c = glint_multinomial_draw(N * px.v.share[i], tree, px.v.hash[i], root_words, g.variant, g.pow_method, root_cache);
+        glint_multinomial_counts c = glint_multinomial_draw(N * px.v.share[i], tree, glint_grid_vertex_hash(px.v, i), root_words, g.variant, g.pow_method, root_cache);
         for (int k = 0; k < 7; ++k) weighted[k] += px.v.weight[i] * c.count[k];
         o.draws += K - 1;
     }

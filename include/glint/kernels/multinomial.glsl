@@ -524,12 +524,13 @@ void glint_multinomial_exact_all_groups_x8(const glint_multinomial_thresholds& c
 
 
 // glint_multinomial_exact_all for the draws i < count with draw[i] set (each with N[i] from 4 to
-// 63 and root words words[i]; N total >= 1), all with tree t, their lane groups (one or two a
-// draw) four or eight at a time: adds to weighted[k], k < t.K, the sum over those draws of
-// weight[i] times their count in bin k (glint_multinomial_exact_all's counts, summed in another
-// order).
-GLINT_FN void glint_multinomial_exact_all_weighted(const glint_multinomial_tree& t, int count, const real N[12], const uvec3 words[12],
-                                                   const bool draw[12], const real weight[12], real weighted[8]) {
+// 63 and root words (words_x[i], words_y[i], words_z[i]); N total >= 1), all with tree t, their
+// lane groups (one or two a draw) four or eight at a time: adds to weighted[k], k < t.K, the sum
+// over those draws of weight[i] times their count in bin k (glint_multinomial_exact_all's counts,
+// summed in another order).
+GLINT_FN void glint_multinomial_exact_all_weighted(const glint_multinomial_tree& t, int count, const real N[12], const uint words_x[12],
+                                                   const uint words_y[12], const uint words_z[12], const bool draw[12], const real weight[12],
+                                                   real weighted[8]) {
     glint_multinomial_thresholds c = glint_multinomial_exact_all_thresholds(t);
     uint lanes[24], frac[24], state[24], step[24];
     real group_weight[24], frac_weight[24];
@@ -541,12 +542,12 @@ GLINT_FN void glint_multinomial_exact_all_weighted(const glint_multinomial_tree&
         real frac_share = weight[i] * (N[i] - real(int(min(N[i], GLINT_MULTINOMIAL_EXACT_ALL_MAX))));
         bool two = group_lanes.y != 0u;  // floor(N) >= 32: the fractional lane is group b's
         lanes[groups] = group_lanes.x, frac[groups] = frac_lanes.x;
-        state[groups] = words[i].x, step[groups] = words[i].y | 1u;
+        state[groups] = words_x[i], step[groups] = words_y[i] | 1u;
         group_weight[groups] = weight[i], frac_weight[groups] = two ? real(0) : frac_share;
         ++groups;
         if (!two) continue;
         lanes[groups] = group_lanes.y, frac[groups] = frac_lanes.y;
-        state[groups] = words[i].z, step[groups] = words[i].y | 1u;
+        state[groups] = words_z[i], step[groups] = words_y[i] | 1u;
         group_weight[groups] = weight[i], frac_weight[groups] = frac_share;
         ++groups;
     }

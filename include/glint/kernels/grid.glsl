@@ -395,8 +395,9 @@ GLINT_FN int glint_lattice_choice(glint_lattice lat, real lattice_u) {
     return chosen;
 }
 
-GLINT_FN glint_grid_vertices glint_footprint_vertices(vec2 uv, glint_footprint f, glint_grid_params g, real lattice_u) {
-    glint_grid_vertices v;
+// The footprint's vertices, written into v (the pixel's): returned, the struct's 244 bytes were
+// copied into the pixel, and the copy's loads waited for the stores (DEVELOPERS.md).
+GLINT_FN void glint_footprint_vertices(vec2 uv, glint_footprint f, glint_grid_params g, real lattice_u, GLINT_OUT(glint_grid_vertices) v) {
     glint_lattice lat = glint_footprint_lattice(f, g.lod_scale);
     int chosen = (lattice_u >= real(0)) ? glint_lattice_choice(lat, lattice_u) : -1;
     v.count = (chosen >= 0) ? 3 : 12;
@@ -462,7 +463,6 @@ GLINT_FN glint_grid_vertices glint_footprint_vertices(vec2 uv, glint_footprint f
         for (int i = 0; i < 12; ++i)
             if (i < v.count)
                 v.share[i] *= exp(g.density_sigma * glint_normal_quantile(glint_open_unit_from_bits(v.hash_z[i])) - real(0.5) * g.density_sigma * g.density_sigma);
-    return v;
 }
 
 // True where a draw of the mean-preserving sampler (with its log1p evaluation of (1 - p)^N) from
@@ -548,7 +548,7 @@ GLINT_FN void glint_grid_skip_inputs(GLINT_INOUT(glint_grid_pixel) px, int verti
 
 GLINT_FN void glint_grid_pixel_vertices(GLINT_INOUT(glint_grid_pixel) px, glint_grid_params g) {
     if (px.ready) return;
-    px.v = glint_footprint_vertices(px.uv, px.f, g, px.lattice_u);
+    glint_footprint_vertices(px.uv, px.f, g, px.lattice_u, px.v);
     // The skip test reads 4 vertices where there are at most 4 (one lattice point), else 12
     // (glint_skip_test_masks); each call with a constant count, whose loop GCC vectorises.
     if (px.v.count <= 4) glint_grid_skip_inputs(px, 4);

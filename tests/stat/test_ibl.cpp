@@ -258,7 +258,8 @@ TEST_CASE("ibl: C++'s level shares, drawn four or eight lane groups at a time, e
                     for (int v = 0; v < px.v.count; ++v) {
                         if (!(px.v.weight[v] > 0)) continue;  // a slot without a vertex
                         const float n = px.N * px.v.share[v];
-                        const glm::uvec3 root = K::glint_multinomial_node_words(K::glint_grid_vertex_hash(px.v, v), 0);
+                        const glm::uvec3 hash(px.v.hash_x[v], px.v.hash_y[v], px.v.hash_z[v]);
+                        const glm::uvec3 root = K::glint_multinomial_node_words(hash, 0);
                         if (K::glint_multinomial_exact_all_applies(n, tree.total, g.variant)) {
                             ++(n >= 32 ? vertices_two_groups : vertices_in_pass);
                             resolved += static_cast<double>(px.v.weight[v]) / static_cast<double>(px.N) > tol;
@@ -266,7 +267,7 @@ TEST_CASE("ibl: C++'s level shares, drawn four or eight lane groups at a time, e
                             ++vertices_other;
                         }
                         if (K::glint_surely_no_success(g, n, std::min(lit_total, 1.0f), K::glint_open_unit_from_bits(root.x))) continue;
-                        const auto c = K::glint_multinomial_draw(n, tree, K::glint_grid_vertex_hash(px.v, v), root, g.variant, g.pow_method, cache);
+                        const auto c = K::glint_multinomial_draw(n, tree, hash, root, g.variant, g.pow_method, cache);
                         for (int k = 0; k < 7; ++k) share[k + 1] += px.v.weight[v] * c.count[k];
                         draws += levels - 1;
                     }

@@ -376,11 +376,6 @@ struct glint_grid_vertices {
     uint hash_z[12];
 };
 
-// Slot i's three words.
-GLINT_FN uvec3 glint_grid_vertex_hash(GLINT_IN(glint_grid_vertices) v, int i) {
-    return uvec3(v.hash_x[i], v.hash_y[i], v.hash_z[i]);
-}
-
 // lattice_u < 0: every lattice point with its weight w_L (DB23, KK25). lattice_u in [0, 1): one
 // lattice point, drawn with probability w_L by inverting their cumulative weights at lattice_u,
 // with share 1 (glint_grid_pixel_setup_stochastic says why its mean and variance are the same).

@@ -736,7 +736,10 @@ GLINT_FN glint_grid_estimate glint_grid_sample_pixel(GLINT_INOUT(glint_grid_pixe
     // log-normal factor is on) and p_j: the mean-preserving sampler sets up once per corner for them.
     glint_binomial_cache cache[4];
     for (int j = 0; j < 4; ++j) cache[j] = glint_binomial_empty_cache();
-    for (int i = 0; i < px.v.count; ++i) {
+    for (int k = 0; k < px.v.count; ++k) {
+        // Lattice point by lattice point (k = 3 l + t for slot 4 t + l), so that the three vertices
+        // of one, which draw with the same N w_L, meet the sampler's setup in its per-corner cache.
+        int i = (px.v.count == 12) ? 4 * (k % 3) + k / 3 : k;
         // A slot without a vertex (skip_scale 0) passes the skip test only where u1 < 1e-5: never drawn.
         if (masks.bits[i] == 0 || !(px.v.weight[i] > real(0))) continue;
         real n = N * px.v.share[i];

@@ -112,7 +112,8 @@ GLINT_FN glint_ibl_shares glint_ibl_level_shares(GLINT_INOUT(glint_grid_pixel) p
     // against 215 to 221).
     int present[12];
     int count = 0;
-    for (int i = 0; i < 12; ++i) {
+    for (int k = 0; k < 12; ++k) {
+        int i = (px.v.count == 12) ? 4 * (k % 3) + k / 3 : k;  // lattice point by lattice point: the root's cache (grid.glsl's draw loop)
         present[count] = i;
         count += (i < px.v.count && px.v.weight[i] > real(0)) ? 1 : 0;
     }

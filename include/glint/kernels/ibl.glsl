@@ -125,12 +125,12 @@ GLINT_FN glint_ibl_shares glint_ibl_level_shares(GLINT_INOUT(glint_grid_pixel) p
             continue;
         }
 #endif
-        // The multinomial's root draws the lit levels against the rest with these uniforms: if
-        // it surely draws none, every count is 0 (glint_surely_no_success).
         // The vertex's words read in place: a helper taking the vertices by value (GLSL's `in`)
         // copied the arrays per call on llvmpipe, which keeps an indexed array in memory (glint_gl's
         // IBL frames about 10% slower).
         uvec3 hash = uvec3(px.v.hash_x[i], px.v.hash_y[i], px.v.hash_z[i]);
+        // The multinomial's root draws the lit levels against the rest with these uniforms: if
+        // it surely draws none, every count is 0 (glint_surely_no_success).
 #if defined(GLINT_GLSL)
         uvec3 root_words = glint_multinomial_node_words(hash, 0);
 #else

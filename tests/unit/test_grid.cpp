@@ -263,7 +263,7 @@ K::glint_grid_estimate estimate_by_definition(glm::vec2 uv, glm::vec2 dx, glm::v
     const glm::vec4 p = K::glint_grid_corner_probabilities(g, light, base);
     for (int k = 0; k < px.v.count; ++k)
         for (int j = 0; j < 4; ++j) {
-            const int i = (px.v.count == 12) ? 4 * (k % 3) + k / 3 : k;  // the kernel's order: lattice point by lattice point
+            const int i = K::glint_grid_draw_slot(px.v.count, k);  // the kernel's order: lattice point by lattice point
             const glm::ivec2 c = base + glm::ivec2(j & 1, j >> 1);
             const float pj = p[j];
             if (!(px.v.weight[i] > 0)) continue;  // a slot without a vertex

@@ -376,6 +376,13 @@ struct glint_grid_vertices {
     uint hash_z[12];
 };
 
+// The slot of the k-th vertex in draw order, lattice point by lattice point (k = 3 l + t for slot
+// 4 t + l; slot k on one lattice point): the three vertices of a lattice point draw with the same
+// N w_L, and the sampler's cache keeps its setup only from one draw to the next.
+GLINT_FN int glint_grid_draw_slot(int count, int k) {
+    return (count == 12) ? 4 * (k % 3) + k / 3 : k;
+}
+
 // lattice_u < 0: every lattice point with its weight w_L (DB23, KK25). lattice_u in [0, 1): one
 // lattice point, drawn with probability w_L by inverting their cumulative weights at lattice_u,
 // with share 1 (glint_grid_pixel_setup_stochastic says why its mean and variance are the same).
@@ -737,9 +744,7 @@ GLINT_FN glint_grid_estimate glint_grid_sample_pixel(GLINT_INOUT(glint_grid_pixe
     glint_binomial_cache cache[4];
     for (int j = 0; j < 4; ++j) cache[j] = glint_binomial_empty_cache();
     for (int k = 0; k < px.v.count; ++k) {
-        // Lattice point by lattice point (k = 3 l + t for slot 4 t + l), so that the three vertices
-        // of one, which draw with the same N w_L, meet the sampler's setup in its per-corner cache.
-        int i = (px.v.count == 12) ? 4 * (k % 3) + k / 3 : k;
+        int i = glint_grid_draw_slot(px.v.count, k);  // the per-corner caches serve a lattice point's three vertices
         // A slot without a vertex (skip_scale 0) passes the skip test only where u1 < 1e-5: never drawn.
         if (masks.bits[i] == 0 || !(px.v.weight[i] > real(0))) continue;
         real n = N * px.v.share[i];

@@ -113,7 +113,7 @@ GLINT_FN glint_ibl_shares glint_ibl_level_shares(GLINT_INOUT(glint_grid_pixel) p
     int present[12];
     int count = 0;
     for (int k = 0; k < 12; ++k) {
-        int i = (px.v.count == 12) ? 4 * (k % 3) + k / 3 : k;  // lattice point by lattice point: the root's cache (grid.glsl's draw loop)
+        int i = glint_grid_draw_slot(px.v.count, k);  // lattice point by lattice point: the root's cache
         present[count] = i;
         count += (i < px.v.count && px.v.weight[i] > real(0)) ? 1 : 0;
     }

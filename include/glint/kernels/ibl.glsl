@@ -85,9 +85,10 @@ GLINT_FN glint_ibl_shares glint_ibl_level_shares(GLINT_INOUT(glint_grid_pixel) p
     bool skip_test = glint_skip_test_applies(g);  // with the vertices' px.skip_scale: glint_surely_no_success
     real lit_total = real(0);
     for (int k = 0; k < 8; ++k) lit_total += lit.p[k];
-    // Every vertex splits with the same probabilities: the tree once per pixel. The triangle
+    // Every vertex splits with the same probabilities: the tree once per pixel, its nodes' q where
+    // a vertex draws down the tree (below; the bit-sliced pass reads the p alone). The triangle
     // vertices of a lattice point share the root's N and p (glint_grid_sample).
-    glint_multinomial_tree tree = glint_multinomial_make_tree(lit, K - 1);
+    glint_multinomial_tree tree = glint_multinomial_tree_root(lit, K - 1);
     glint_binomial_cache root_cache = glint_binomial_empty_cache();
     real weighted[8];  // sum over the vertices of l_t M_k, divided by N once after the loop
     for (int k = 0; k < 8; ++k) weighted[k] = real(0);
@@ -96,50 +97,79 @@ GLINT_FN glint_ibl_shares glint_ibl_level_shares(GLINT_INOUT(glint_grid_pixel) p
     // drawn together (glint_multinomial_exact_all_weighted, four or eight lane groups at a time),
     // which adds their l_t M_k to weighted before the loop: the same counts as
     // glint_multinomial_draw vertex by vertex, as GLSL does it, summed in another order.
-    bool in_batch[12];
+    // The test is glint_multinomial_exact_all_applies's with & for &&, over the 12 slots at once
+    // (GCC vectorises it; the call per slot with its branches, the present list and the loop below
+    // were a fifth of the K = 4 estimate's instructions where every vertex is in the batch, as in
+    // the report's IBL frame).
+    int in_batch[12];  // nonzero where the vertex is in the batch
     real batch_N[12];
     uint root_x[12], root_y[12], root_z[12];  // glint_multinomial_node_words(hash, 0) = PCG3D(hash), every vertex together
-    for (int i = 0; i < 12; ++i) {
-        batch_N[i] = N * px.v.share[i];
-        in_batch[i] = i < px.v.count && px.v.weight[i] > real(0) && glint_multinomial_exact_all_applies(batch_N[i], tree.total, g.variant);
+    int batched = 0;
+    int present_count = 0;
+    {
+        typedef real realx4 __attribute__((vector_size(4 * sizeof(real))));
+        typedef decltype(realx4{} < realx4{}) maskx4;  // a comparison's lanes: all ones or 0
+        typedef int i32x4 __attribute__((vector_size(16)));
+        const maskx4 unbiased = maskx4{} - ((g.variant == GLINT_BINOMIAL_UNBIASED) ? 1 : 0);
+        i32x4 batched_lanes = {}, present_lanes = {};
+        for (int b = 0; b < 12; b += 4) {
+            realx4 share, weight;
+            std::memcpy(&share, px.v.share + b, sizeof(share));
+            std::memcpy(&weight, px.v.weight + b, sizeof(weight));
+            const realx4 n = N * share;
+            const maskx4 slot = {b, b + 1, b + 2, b + 3};
+            const i32x4 present = __builtin_convertvector((slot < px.v.count) & (weight > real(0)), i32x4);
+            const i32x4 batch = present & __builtin_convertvector(unbiased & (n >= GLINT_MULTINOMIAL_EXACT_SPLIT_MIN) & (n <= GLINT_MULTINOMIAL_EXACT_ALL_MAX) &
+                                                                  (n * tree.total >= real(1)),
+                                                                  i32x4);
+            std::memcpy(batch_N + b, &n, sizeof(n));
+            std::memcpy(in_batch + b, &batch, sizeof(batch));
+            batched_lanes -= batch;  // -1 per lane in the batch
+            present_lanes -= present;
+        }
+        for (int l = 0; l < 4; ++l) batched += batched_lanes[l], present_count += present_lanes[l];
     }
     glint_pcg3d_many(px.v.hash_x, px.v.hash_y, px.v.hash_z, px.v.count, root_x, root_y, root_z);
     glint_multinomial_exact_all_weighted(tree, px.v.count, batch_N, root_x, root_y, root_z, in_batch, px.v.weight, weighted);
-#endif
-    // The slots that hold a vertex, packed: a GPU runs a fragment's loop as long as its longest
-    // neighbour's, so the loop goes over the present vertices (on llvmpipe, glint_gl at 192 x 120,
-    // a loop over the twelve slots took 157 ms a K = 4 frame against 139 to 151, 235 to 245 at K = 8
-    // against 215 to 221).
-    int present[12];
-    int count = 0;
-    for (int k = 0; k < 12; ++k) {
-        int i = glint_grid_draw_slot(px.v.count, k);  // lattice point by lattice point: the root's cache
-        present[count] = i;
-        count += (i < px.v.count && px.v.weight[i] > real(0)) ? 1 : 0;
-    }
-    for (int j = 0; j < count; ++j) {
-        int i = present[j];
-#if !defined(GLINT_GLSL)
-        if (in_batch[i]) {
-            o.draws += K - 1;  // N total >= 1 there: the skip test below never fires
-            continue;
-        }
-#endif
-        // The vertex's words read in place: a helper taking the vertices by value (GLSL's `in`)
-        // copied the arrays per call on llvmpipe, which keeps an indexed array in memory (glint_gl's
-        // IBL frames about 10% slower).
-        uvec3 hash = uvec3(px.v.hash_x[i], px.v.hash_y[i], px.v.hash_z[i]);
-        // The multinomial's root draws the lit levels against the rest with these uniforms: if
-        // it surely draws none, every count is 0 (glint_surely_no_success).
-#if defined(GLINT_GLSL)
-        uvec3 root_words = glint_multinomial_node_words(hash, 0);
+    o.draws += batched * (K - 1);  // N total >= 1 there: the skip test below never fires
+    bool rest = batched < present_count;  // vertices left to the loop below
 #else
-        uvec3 root_words = uvec3(root_x[i], root_y[i], root_z[i]);  // hashed with the batch
+    bool rest = true;
 #endif
-        if (skip_test && glint_surely_no_success_scaled(px.skip_scale[i], min(lit_total, real(1)), glint_open_unit_from_bits(root_words.x))) continue;
-        glint_multinomial_counts c = glint_multinomial_draw(N * px.v.share[i], tree, hash, root_words, g.variant, g.pow_method, root_cache);
-        for (int k = 0; k < 7; ++k) weighted[k] += px.v.weight[i] * c.count[k];
-        o.draws += K - 1;
+    if (rest) {
+        glint_multinomial_tree_splits(tree);
+        // The slots that hold a vertex, packed: a GPU runs a fragment's loop as long as its longest
+        // neighbour's, so the loop goes over the present vertices (on llvmpipe, glint_gl at 192 x 120,
+        // a loop over the twelve slots took 157 ms a K = 4 frame against 139 to 151, 235 to 245 at K = 8
+        // against 215 to 221).
+        int present[12];
+        int count = 0;
+        for (int k = 0; k < 12; ++k) {
+            int i = glint_grid_draw_slot(px.v.count, k);  // lattice point by lattice point: the root's cache
+            present[count] = i;
+            count += (i < px.v.count && px.v.weight[i] > real(0)) ? 1 : 0;
+        }
+        for (int j = 0; j < count; ++j) {
+            int i = present[j];
+#if !defined(GLINT_GLSL)
+            if (in_batch[i] != 0) continue;  // drawn above
+#endif
+            // The vertex's words read in place: a helper taking the vertices by value (GLSL's `in`)
+            // copied the arrays per call on llvmpipe, which keeps an indexed array in memory (glint_gl's
+            // IBL frames about 10% slower).
+            uvec3 hash = uvec3(px.v.hash_x[i], px.v.hash_y[i], px.v.hash_z[i]);
+            // The multinomial's root draws the lit levels against the rest with these uniforms: if
+            // it surely draws none, every count is 0 (glint_surely_no_success).
+#if defined(GLINT_GLSL)
+            uvec3 root_words = glint_multinomial_node_words(hash, 0);
+#else
+            uvec3 root_words = uvec3(root_x[i], root_y[i], root_z[i]);  // hashed with the batch
+#endif
+            if (skip_test && glint_surely_no_success_scaled(px.skip_scale[i], min(lit_total, real(1)), glint_open_unit_from_bits(root_words.x))) continue;
+            glint_multinomial_counts c = glint_multinomial_draw(N * px.v.share[i], tree, hash, root_words, g.variant, g.pow_method, root_cache);
+            for (int k = 0; k < 7; ++k) weighted[k] += px.v.weight[i] * c.count[k];
+            o.draws += K - 1;
+        }
     }
     for (int k = 0; k < 7; ++k) o.share[k + 1] = weighted[k] / N;
     return o;

@@ -529,14 +529,14 @@ void glint_multinomial_exact_all_groups_x8(const glint_multinomial_thresholds& c
 // over those draws of weight[i] times their count in bin k (glint_multinomial_exact_all's counts,
 // summed in another order).
 GLINT_FN void glint_multinomial_exact_all_weighted(const glint_multinomial_tree& t, int count, const real N[12], const uint words_x[12],
-                                                   const uint words_y[12], const uint words_z[12], const bool draw[12], const real weight[12],
+                                                   const uint words_y[12], const uint words_z[12], const int draw[12], const real weight[12],
                                                    real weighted[8]) {
     glint_multinomial_thresholds c = glint_multinomial_exact_all_thresholds(t);
-    uint lanes[24], frac[24], state[24], step[24];
-    real group_weight[24], frac_weight[24];
+    uint lanes[32], frac[32], state[32], step[32];  // up to 24 groups and the last pass's padding
+    real group_weight[32], frac_weight[32];
     int groups = 0;
     for (int i = 0; i < count; ++i) {
-        if (!draw[i]) continue;
+        if (draw[i] == 0) continue;
         uvec2 group_lanes = glint_multinomial_exact_all_lanes(N[i]);
         uvec2 frac_lanes = glint_multinomial_exact_all_frac_lanes(group_lanes);
         real frac_share = weight[i] * (N[i] - real(int(min(N[i], GLINT_MULTINOMIAL_EXACT_ALL_MAX))));
@@ -552,8 +552,14 @@ GLINT_FN void glint_multinomial_exact_all_weighted(const glint_multinomial_tree&
         ++groups;
     }
     const int width = glint_cpu_avx2() ? 8 : 4;
-    for (int j = groups; j < ((groups + width - 1) / width) * width; ++j)
-        lanes[j] = 0u, frac[j] = 0u, state[j] = 0u, step[j] = 1u, group_weight[j] = real(0), frac_weight[j] = real(0);
+    // The last pass's groups past `groups` hold no trial: eight of them, each array's in one copy
+    // of constant size (a loop up to the next multiple of the width became six calls of memset a
+    // pixel, and so did a loop of two copies).
+    const uint zero_words[8] = {0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u}, one_words[8] = {1u, 1u, 1u, 1u, 1u, 1u, 1u, 1u};
+    const real zero_reals[8] = {real(0), real(0), real(0), real(0), real(0), real(0), real(0), real(0)};
+    std::memcpy(lanes + groups, zero_words, sizeof(zero_words)), std::memcpy(frac + groups, zero_words, sizeof(zero_words));
+    std::memcpy(state + groups, zero_words, sizeof(zero_words)), std::memcpy(step + groups, one_words, sizeof(one_words));
+    std::memcpy(group_weight + groups, zero_reals, sizeof(zero_reals)), std::memcpy(frac_weight + groups, zero_reals, sizeof(zero_reals));
     for (int j = 0; j < groups; j += width) {
         if (width == 8) glint_multinomial_exact_all_groups_x8(c, t.K, lanes + j, frac + j, state + j, step + j, group_weight + j, frac_weight + j, weighted);
         else glint_multinomial_exact_all_groups_x4(c, t.K, lanes + j, frac + j, state + j, step + j, group_weight + j, frac_weight + j, weighted);

@@ -58,10 +58,36 @@ GLINT_FN glint_multinomial_probabilities glint_ibl_probabilities(GLINT_IN(glint_
     // eighth of glint_ibl_sample's samples).
     glint_multinomial_probabilities pr;
     int K = clamp(lv.count, 3, GLINT_IBL_MAX_LEVELS);
+#if defined(GLINT_GLSL)
     real total = real(0);
     for (int k = 0; k < 8; ++k) total += (k < K) ? clamp(e_d * ind.w[k] / max(d_h, real(1)), real(0), real(1)) : real(0);
     real scale = (total > real(1)) ? real(1) / total : real(1);
     for (int k = 0; k < 8; ++k) pr.p[k] = ((k < K) ? clamp(e_d * ind.w[k] / max(d_h, real(1)), real(0), real(1)) : real(0)) * scale;
+#else
+    // The same values four levels at a time (GCC kept the loops scalar: sixteen divisions a
+    // pixel); the clamp as GLM's max then min, which keep a NaN; the total summed in the loop's
+    // order, which a float sum must keep.
+    typedef real realx4 __attribute__((vector_size(4 * sizeof(real))));
+    typedef decltype(realx4{} < realx4{}) maskx4;
+    const realx4 none = {}, one = none + real(1);
+    realx4 v[2];
+    for (int h = 0; h < 2; ++h) {
+        realx4 w;
+        std::memcpy(&w, ind.w + 4 * h, sizeof(w));
+        realx4 x = e_d * w / max(d_h, real(1));
+        x = (x < none) ? none : x;
+        x = (one < x) ? one : x;
+        const maskx4 level = {4 * h, 4 * h + 1, 4 * h + 2, 4 * h + 3};
+        v[h] = (level < K) ? x : none;
+    }
+    real total = real(0);
+    for (int k = 0; k < 8; ++k) total += v[k >> 2][k & 3];
+    real scale = (total > real(1)) ? real(1) / total : real(1);
+    for (int h = 0; h < 2; ++h) {
+        const realx4 scaled = v[h] * scale;
+        std::memcpy(pr.p + 4 * h, &scaled, sizeof(scaled));
+    }
+#endif
     return pr;
 }
 

@@ -553,7 +553,7 @@ GLINT_FN void glint_multinomial_exact_all_weighted(const glint_multinomial_tree&
     }
     const int width = glint_cpu_avx2() ? 8 : 4;
     // The last pass's groups past `groups` hold no trial: eight of them, each array's in one copy
-    // of constant size (a loop up to the next multiple of the width became six calls of memset a
+    // of constant size (a loop up to the next multiple of the width became five calls of memset a
     // pixel, and so did a loop of two copies).
     const uint zero_words[8] = {0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u}, one_words[8] = {1u, 1u, 1u, 1u, 1u, 1u, 1u, 1u};
     const real zero_reals[8] = {real(0), real(0), real(0), real(0), real(0), real(0), real(0), real(0)};

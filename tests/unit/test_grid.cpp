@@ -7,9 +7,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <string>
 #include <tuple>
+#include <utility>
 #include <vector>
 
 #include <glint/grid.hpp>
@@ -586,6 +588,71 @@ TEST_CASE("the four lattice points' triangles at once (C++) equal the scalar rot
     const auto f_skew = lattice_triangles_mismatches<float>(true), d_skew = lattice_triangles_mismatches<double>(true);
     MESSAGE("float: " << f.first << " lattice points, " << f.second << " differ; double: " << d.first << ", " << d.second
                       << "; with the scalar path's u one ulp off: " << f_skew.second << " and " << d_skew.second << " differ");
+    CHECK(f.second == 0);
+    CHECK(d.second == 0);
+    CHECK(f_skew.second > 1000);
+    CHECK(d_skew.second > 1000);
+}
+
+namespace {
+
+// C++'s four-lane versions of glint_grid_skip_inputs and glint_ibl_probabilities against the
+// scalar formulas that GLSL runs, written out here: the number of values that differ (bit for bit;
+// two NaNs agree). `skew` spoils the reference (the skip bound's 1.0001 as 1.0002, the
+// probabilities' total summed from the top level down), so that the comparison is seen to fail:
+// each spoilt part alone made about 27000 and 2800 of the float values differ (checked by hand).
+template <class real>
+std::pair<int, int> vector_path_mismatches(bool skew) {
+    using KR = glint::detail::glsl::kernels<real>;
+    int values = 0, differ = 0;
+    auto same = [](real a, real b) { return a == b || (std::isnan(a) && std::isnan(b)); };
+    for (std::uint32_t i = 0; i < 3000; ++i) {
+        const glm::vec2 r1 = random_unit(i, 11), r2 = random_unit(i, 12), r3 = random_unit(i, 13);
+        // Skip bounds: ln densities -3 to 5 put N w_L on both sides of 2, where the bound's select turns.
+        glint::grid_params<real> gp;
+        gp.log_density = real(-3.0f + 8.0f * r1.x);
+        gp.density_sigma = (i % 5 == 4) ? real(0.5) : real(0);
+        gp.seed = i;
+        const auto g = glint::detail::to_kernel(gp);
+        glm::vec2 dx, dy;
+        footprint(0.05f + 2.0f * r1.y, 1.0f + 15.0f * r2.x, 3.14159265f * r2.y, dx, dy);
+        const real lattice_u = (i % 3 == 0) ? real(r3.y) : real(-1);
+        auto px = KR::glint_grid_pixel_setup_stochastic(glm::vec<2, real>(100.0f * r3.x, 100.0f * r3.x * r3.y), glm::vec<2, real>(dx), glm::vec<2, real>(dy), g,
+                                                        lattice_u);
+        KR::glint_grid_pixel_vertices(px, g);
+        for (int s = 0; s < (px.v.count <= 4 ? 4 : 12); ++s) {
+            const real scale = (px.v.weight[s] > real(0)) ? (skew ? real(1.0002) : real(1.0001)) : real(0);
+            differ += !same(px.skip_scale[s], KR::glint_binomial_trials_bound(px.N * px.v.share[s]) * scale);
+            ++values;
+        }
+        // Level probabilities: K from 3 to 8, indicators from -0.2 to 1.2 (clamped at both ends), a
+        // NaN now and then, E_D / D_H from 0 to 3 (totals above 1 scaled down).
+        typename KR::glint_ibl_levels lv;
+        lv.count = 3 + static_cast<int>(i % 6);
+        typename KR::glint_ibl_indicators ind;
+        for (int k = 0; k < 8; ++k) {
+            lv.radiance[k] = real(k);
+            ind.w[k] = real(-0.2f + 1.4f * random_unit(i, 20 + static_cast<std::uint32_t>(k)).x);
+        }
+        if (i % 97 == 5) ind.w[i % 3] = std::numeric_limits<real>::quiet_NaN();
+        const real e_d = real(3.0f * r3.y), d_h = real(0.5f + 3.5f * random_unit(i, 14).x);
+        const auto pr = KR::glint_ibl_probabilities(lv, ind, e_d, d_h);
+        real term[8], total = real(0);
+        for (int k = 0; k < 8; ++k) term[k] = (k < lv.count) ? glm::clamp(e_d * ind.w[k] / glm::max(d_h, real(1)), real(0), real(1)) : real(0);
+        for (int k = 0; k < 8; ++k) total += term[skew ? 7 - k : k];
+        const real scale = (total > real(1)) ? real(1) / total : real(1);
+        for (int k = 0; k < 8; ++k, ++values) differ += !same(pr.p[k], term[k] * scale);
+    }
+    return {values, differ};
+}
+
+}  // namespace
+
+TEST_CASE("C++'s four-lane skip bounds and IBL level probabilities equal the scalar formulas GLSL runs, in float and double") {
+    const auto f = vector_path_mismatches<float>(false), d = vector_path_mismatches<double>(false);
+    const auto f_skew = vector_path_mismatches<float>(true), d_skew = vector_path_mismatches<double>(true);
+    MESSAGE("float: " << f.first << " values, " << f.second << " differ; double: " << d.first << ", " << d.second
+                      << "; against the spoilt references: " << f_skew.second << " and " << d_skew.second << " differ");
     CHECK(f.second == 0);
     CHECK(d.second == 0);
     CHECK(f_skew.second > 1000);

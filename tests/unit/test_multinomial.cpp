@@ -271,7 +271,7 @@ TEST_CASE("the one-pass draw puts each trial in the bin its 32 digits fall in, a
 template <std::size_t W, class Pass>
 void check_lane_group_pass(Pass pass) {
     using MF = glint::detail::glsl::kernels<float>;
-    long groups = 0, differ = 0, batches = 0;
+    long groups = 0, differ = 0, batches = 0, two_passes = 0;
     for (int K : {2, 3, 4, 5, 6, 7, 8})  // every instantiation of the pass (T = K)
         for (std::uint32_t trial = 0; trial < 400; ++trial) {
             MF::glint_multinomial_probabilities pr;
@@ -297,7 +297,7 @@ void check_lane_group_pass(Pass pass) {
                 float weight[W] = {}, frac_weight[W] = {}, weighted[8];
                 weight[v] = 1.0f, frac_weight[v] = 0.5f;
                 for (int k = 0; k < 8; ++k) weighted[k] = -1.0f;
-                pass(c, t.K, lanes, frac, state, step, weight, frac_weight, weighted);
+                two_passes += pass(c, t.K, lanes, frac, state, step, weight, frac_weight, weighted) == 2;
                 const auto one = MF::glint_multinomial_exact_all_group(c, t.K, lanes[v], state[v], step[v]);
                 // The bins of the one-group pass, as glint_multinomial_exact_all_counts reads them.
                 std::uint32_t previous = 0;
@@ -313,18 +313,99 @@ void check_lane_group_pass(Pass pass) {
                 ++groups;
             }
         }
-    MESSAGE(batches << " sets of " << W << " groups, each group weighted alone: " << groups << " groups, " << differ << " differ from their one-group pass");
+    MESSAGE(batches << " sets of " << W << " groups, each group weighted alone: " << groups << " groups, " << differ
+                    << " differ from their one-group pass; " << two_passes << " ran a second pass");
     CHECK(groups == 7 * 400 * static_cast<long>(W));
     CHECK(differ == 0);
 }
 
 TEST_CASE("C++'s four and eight lane groups at once give each group the counts of its own one-group pass") {
     using MF = glint::detail::glsl::kernels<float>;
-    check_lane_group_pass<4>([](auto&&... a) { MF::glint_multinomial_exact_all_groups_x4(a...); });
+    check_lane_group_pass<4>([](auto&&... a) { return MF::glint_multinomial_exact_all_groups_x4(a...); });
     // The eight-group pass compiled for the baseline target (two vectors of four), on any CPU...
-    check_lane_group_pass<8>([](auto&&... a) { MF::glint_multinomial_exact_all_groups<8>(a...); });
+    check_lane_group_pass<8>([](auto&&... a) { return MF::glint_multinomial_exact_all_groups<8>(a...); });
     // ... and for AVX2, where glint_multinomial_exact_all_weighted runs it (the CPU has AVX2).
     MESSAGE("eight-group pass with AVX2: " << std::string(MF::glint_cpu_avx2() ? "run" : "not run: not used here (a CPU without AVX2, or a build without the AVX2 path)"));
     if (MF::glint_cpu_avx2())
-        check_lane_group_pass<8>([](auto&&... a) { MF::glint_multinomial_exact_all_groups_x8(a...); });
+        check_lane_group_pass<8>([](auto&&... a) { return MF::glint_multinomial_exact_all_groups_x8(a...); });
+}
+
+namespace {
+
+// Thresholds made so that a trial lies between two that share their first 16 digits (a follower,
+// left out of the first pass): lane 0 of group g has its first 16 digits equal to c_j's and c_(j+1)'s
+// (c_j = those digits then 16 zeros, c_(j+1) = then 16 ones), so it is undecided after 16 digits and
+// lies in bin j + 1 unless its last 16 digits are all ones. The pass must run again with every
+// threshold (2 passes) and give each group its one-group counts; the first pass alone, not stopped,
+// must not (`spoilt` counts the groups where it differs).
+template <std::size_t W, class Pass>
+void check_follower_pass(Pass pass, long& calls, long& two_passes, long& differ, long& spoilt) {
+    using MF = glint::detail::glsl::kernels<float>;
+    for (int K : {2, 3, 5, 8})
+        for (std::uint32_t trial = 0; trial < 100; ++trial) {
+            std::uint32_t lanes[W], frac[W], state[W], step[W];
+            for (std::size_t v = 0; v < W; ++v) {
+                const glm::uvec3 h = glint::pcg3d(glm::uvec3(trial, static_cast<std::uint32_t>(v), 0x5151u + static_cast<std::uint32_t>(K)));
+                lanes[v] = 0xffffffffu, frac[v] = 0u, state[v] = h.x, step[v] = h.y | 1u;
+            }
+            const std::size_t g = trial % W;
+            std::uint32_t digits = 0;  // lane 0's first 16 digits: bit 0 of the group's words
+            for (std::uint32_t d = 0; d < 16; ++d) digits = (digits << 1) | (MF::glint_hash_u32(state[g] + d * step[g]) & 1u);
+            const int j = static_cast<int>(trial % static_cast<std::uint32_t>(K - 1));  // c_j and c_(j+1) share 16 digits
+            MF::glint_multinomial_thresholds c;
+            const double low = std::ldexp(static_cast<double>(digits), 16), high = low + 65535.0;
+            for (int k = 0; k < 8; ++k) {
+                // Below c_j: evenly from 0; above c_(j+1): evenly up to 2^32 - 1.
+                const double x = k < j ? low * (k + 1) / (j + 1) : k == j ? low : k == j + 1 ? high
+                                       : high + (4294967295.0 - high) * (k - j - 1) / (8 - j - 1);
+                c.c[k] = static_cast<std::uint32_t>(x);
+                c.full[k] = false;
+            }
+            for (std::size_t v = 0; v < W; ++v) {
+                float weight[W] = {}, frac_weight[W] = {}, weighted[8] = {}, first_only[8] = {};
+                weight[v] = 1.0f;
+                const int passes = pass(c, K, lanes, frac, state, step, weight, frac_weight, weighted);
+                // The spoilt pass: the leaders alone (as glint_multinomial_exact_all_groups picks
+                // them), never stopped.
+                MF::glint_multinomial_thresholds leaders = c;
+                int bin[8] = {}, count = 0;
+                for (int k = 0; k < K; ++k) {
+                    const bool follower = k > 0 && ((c.c[k - 1] ^ c.c[k]) >> 16) == 0u;
+                    leaders.c[count] = c.c[k], bin[count] = k;
+                    count += follower ? 0 : 1;
+                }
+                MF::glint_multinomial_exact_all_groups_of<W>(leaders, count, bin, 32, lanes, frac, state, step, weight, frac_weight, first_only);
+                const auto one = MF::glint_multinomial_exact_all_group(c, K, lanes[v], state[v], step[v]);
+                std::uint32_t previous = 0;
+                bool same = true, same_first = true;
+                for (int k = 0; k < K; ++k) {
+                    const float expected = static_cast<float>(MF::glint_bit_count(one.mask[k] & ~previous));
+                    previous = one.mask[k];
+                    same = same && weighted[k] == expected;
+                    same_first = same_first && first_only[k] == expected;
+                }
+                ++calls;
+                two_passes += passes == 2;
+                differ += !same;
+                spoilt += !same_first;
+            }
+        }
+}
+
+}  // namespace
+
+TEST_CASE("the lane-group pass leaves out thresholds within 2^16 of the one before only while no trial lies between them") {
+    using MF = glint::detail::glsl::kernels<float>;
+    long calls = 0, two_passes = 0, differ = 0, spoilt = 0;
+    check_follower_pass<4>([](auto&&... a) { return MF::glint_multinomial_exact_all_groups_x4(a...); }, calls, two_passes, differ, spoilt);
+    check_follower_pass<8>([](auto&&... a) { return MF::glint_multinomial_exact_all_groups<8>(a...); }, calls, two_passes, differ, spoilt);
+    if (MF::glint_cpu_avx2())
+        check_follower_pass<8>([](auto&&... a) { return MF::glint_multinomial_exact_all_groups_x8(a...); }, calls, two_passes, differ, spoilt);
+    MESSAGE(calls << " groups weighted alone under thresholds with a trial between two that share 16 digits: " << two_passes
+                  << " ran the second pass, " << differ << " differ from their one-group pass; without the stop after 16 digits "
+                  << spoilt << " would");
+    CHECK(calls >= 4 * 100 * 12);
+    CHECK(two_passes == calls);  // every call has the trial between c_j and c_(j+1)
+    CHECK(differ == 0);
+    CHECK(spoilt >= 4 * 100 / 2);  // the trial's group in bin j + 1 at least (its other digits all ones: 2^-16)
 }

@@ -498,10 +498,10 @@ __attribute__((always_inline)) static inline bool glint_multinomial_exact_all_gr
 // almost nothing (the sun's, a few texels of the map) make followers: in glint_frame_loop ibl K 1
 // (sunset.exr), at K = 4 6864 of the 7825 passes left one of the three thresholds out; at K = 8
 // 5651 kept four of the seven, 1320 five, 311 six; 40 and 61 passes ran again. The IBL estimates
-// there took 19.57M to 19.12M instructions at K = 4 and 26.77M to 24.13M at K = 8 (callgrind, GCC
-// 12; the same sums), the frames of glint_frame_loop ibl K 100 2263 to 2087 us and 2977 to 2457 us
-// (least of seven alternating runs, this project's 2-core AMD EPYC, CPU). With 14 digits the
-// frames took as long, with 12 longer (more passes ran again). Returns the passes run, for tests.
+// there took 19.57M to 19.11M instructions at K = 4 and 26.77M to 23.97M at K = 8 (callgrind, GCC
+// 12; the same sums), the frames of glint_frame_loop ibl K 100 2251 to 2113 us and 2884 to 2502 us
+// (least of seven alternating runs, this project's 2-core AMD EPYC, CPU; DEVELOPERS.md). With 14
+// digits the frames took as long, with 12 longer (more passes ran again). Returns the passes run.
 GLINT_CONST(int) GLINT_MULTINOMIAL_FOLLOWER_DIGITS = 16;  // even: the pass tests every second digit
 
 template <int W>

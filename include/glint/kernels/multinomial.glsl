@@ -395,8 +395,8 @@ GLINT_FN void glint_multinomial_exact_all(real N, glint_multinomial_tree t, uvec
 // compiles it with AVX2.
 //
 // The pass compares with the thresholds it is given, c.c[0 .. T-1], and adds threshold j's bin to
-// weighted[bin[j]]. With stop_digit below 32 it gives up, returning false before it adds anything,
-// where a trial is still undecided after that many digits (an even number) (see glint_multinomial_exact_all_groups).
+// weighted[bin[j]]. Where a trial is still undecided after stop_digit digits (even; 32: never),
+// it gives up and returns false before it adds anything (glint_multinomial_exact_all_groups).
 template <int T, int W>
 __attribute__((always_inline)) static inline bool glint_multinomial_exact_all_groups_pass(const glint_multinomial_thresholds& c, const int bin[8],
                                                                                           int stop_digit, const uint lanes_in[],

@@ -540,15 +540,11 @@ __attribute__((always_inline)) static inline int glint_multinomial_exact_all_gro
         leaders.c[count] = c.c[k], leaders.full[count] = c.full[k], leader_bin[count] = k;
         count += follower ? 0 : 1;
     }
-    if (count == T) {
-        glint_multinomial_exact_all_groups_of<W>(c, T, all_bins, 32, lanes_in, frac_in, state_in, step_in, weight_in, frac_weight_in, weighted);
-        return 1;
-    }
-    if (glint_multinomial_exact_all_groups_of<W>(leaders, count, leader_bin, GLINT_MULTINOMIAL_FOLLOWER_DIGITS, lanes_in, frac_in, state_in, step_in,
-                                                 weight_in, frac_weight_in, weighted))
+    if (count < T && glint_multinomial_exact_all_groups_of<W>(leaders, count, leader_bin, GLINT_MULTINOMIAL_FOLLOWER_DIGITS, lanes_in, frac_in,
+                                                              state_in, step_in, weight_in, frac_weight_in, weighted))
         return 1;
     glint_multinomial_exact_all_groups_of<W>(c, T, all_bins, 32, lanes_in, frac_in, state_in, step_in, weight_in, frac_weight_in, weighted);
-    return 2;
+    return (count < T) ? 2 : 1;
 }
 
 // Four groups, for the baseline target.

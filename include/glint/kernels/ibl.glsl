@@ -127,7 +127,7 @@ GLINT_FN glint_ibl_shares glint_ibl_level_shares(GLINT_INOUT(glint_grid_pixel) p
     // (GCC vectorises it; the call per slot with its branches, the present list and the loop below
     // were a fifth of the K = 4 estimate's instructions where every vertex is in the batch, as in
     // the report's IBL frame).
-    int in_batch[12];  // nonzero where the vertex is in the batch
+    uint in_batch = 0u;  // bit i set where vertex i is in the batch
     real batch_N[12];
     uint root_x[12], root_y[12], root_z[12];  // glint_multinomial_node_words(hash, 0) = PCG3D(hash), every vertex together
     int batched = 0;
@@ -137,7 +137,7 @@ GLINT_FN glint_ibl_shares glint_ibl_level_shares(GLINT_INOUT(glint_grid_pixel) p
         typedef decltype(realx4{} < realx4{}) maskx4;  // a comparison's lanes: all ones or 0
         typedef int i32x4 __attribute__((vector_size(16)));
         const maskx4 unbiased = maskx4{} - ((g.variant == GLINT_BINOMIAL_UNBIASED) ? 1 : 0);
-        i32x4 batched_lanes = {}, present_lanes = {};
+        i32x4 batched_lanes = {}, present_lanes = {}, batch_bits = {};
         for (int b = 0; b < 12; b += 4) {
             realx4 share, weight;
             std::memcpy(&share, px.v.share + b, sizeof(share));
@@ -149,14 +149,14 @@ GLINT_FN glint_ibl_shares glint_ibl_level_shares(GLINT_INOUT(glint_grid_pixel) p
                                                                   (n * tree.total >= real(1)),
                                                                   i32x4);
             std::memcpy(batch_N + b, &n, sizeof(n));
-            std::memcpy(in_batch + b, &batch, sizeof(batch));
+            batch_bits |= batch & (i32x4{1, 2, 4, 8} << b);
             batched_lanes -= batch;  // -1 per lane in the batch
             present_lanes -= present;
         }
-        for (int l = 0; l < 4; ++l) batched += batched_lanes[l], present_count += present_lanes[l];
+        for (int l = 0; l < 4; ++l) batched += batched_lanes[l], present_count += present_lanes[l], in_batch |= uint(batch_bits[l]);
     }
     glint_pcg3d_many(px.v.hash_x, px.v.hash_y, px.v.hash_z, px.v.count, root_x, root_y, root_z);
-    glint_multinomial_exact_all_weighted(tree, px.v.count, batch_N, root_x, root_y, root_z, in_batch, px.v.weight, weighted);
+    glint_multinomial_exact_all_weighted(tree, in_batch, batch_N, root_x, root_y, root_z, px.v.weight, weighted);
     o.draws += batched * (K - 1);  // N total >= 1 there: the skip test below never fires
     bool rest = batched < present_count;  // vertices left to the loop below
 #else
@@ -178,7 +178,7 @@ GLINT_FN glint_ibl_shares glint_ibl_level_shares(GLINT_INOUT(glint_grid_pixel) p
         for (int j = 0; j < count; ++j) {
             int i = present[j];
 #if !defined(GLINT_GLSL)
-            if (in_batch[i] != 0) continue;  // drawn above
+            if (((in_batch >> uint(i)) & 1u) != 0u) continue;  // drawn above
 #endif
             // The vertex's words read in place: a helper taking the vertices by value (GLSL's `in`)
             // copied the arrays per call on llvmpipe, which keeps an indexed array in memory (glint_gl's

@@ -397,6 +397,39 @@ GLINT_FN void glint_multinomial_exact_all(real N, glint_multinomial_tree t, uvec
 // The pass compares with the thresholds it is given, c.c[0 .. T-1], and adds threshold j's bin to
 // weighted[bin[j]]. Where a trial is still undecided after stop_digit digits (even; 32: never),
 // it gives up and returns false before it adds anything (glint_multinomial_exact_all_groups).
+// The lane sums of eight vectors of W = 4 or 8 lanes, each added in pairs of lanes, then pairs of
+// pairs: total[k] = sum[k][0] + ... + sum[k][W - 1]. The vectors are combined as they are added
+// (shuffles that put vector 2j's pair sums in the even lanes and 2j + 1's in the odd ones, and so
+// on), so that three rounds of additions do what 8 (W - 1) scalar ones would.
+template <typename V>
+__attribute__((always_inline)) static inline void glint_pairwise_lane_sums(const V sum[8], real total[8]) {
+    constexpr int W = sizeof(V) / sizeof(real);
+    static_assert(W == 4 || W == 8, "four or eight lanes");
+    V pairs[4];  // lane 2i + e: vector 2j + e's lanes 2i and 2i + 1
+    for (int j = 0; j < 4; ++j) {
+        if constexpr (W == 8)
+            pairs[j] = __builtin_shufflevector(sum[2 * j], sum[2 * j + 1], 0, 8, 2, 10, 4, 12, 6, 14) +
+                       __builtin_shufflevector(sum[2 * j], sum[2 * j + 1], 1, 9, 3, 11, 5, 13, 7, 15);
+        else
+            pairs[j] = __builtin_shufflevector(sum[2 * j], sum[2 * j + 1], 0, 4, 2, 6) + __builtin_shufflevector(sum[2 * j], sum[2 * j + 1], 1, 5, 3, 7);
+    }
+    // Lanes 4 h + m: vector 4 j + m's sum over lanes 4 h to 4 h + 3.
+    V quads[2];
+    for (int j = 0; j < 2; ++j) {
+        if constexpr (W == 8)
+            quads[j] = __builtin_shufflevector(pairs[2 * j], pairs[2 * j + 1], 0, 1, 8, 9, 4, 5, 12, 13) +
+                       __builtin_shufflevector(pairs[2 * j], pairs[2 * j + 1], 2, 3, 10, 11, 6, 7, 14, 15);
+        else
+            quads[j] = __builtin_shufflevector(pairs[2 * j], pairs[2 * j + 1], 0, 1, 4, 5) + __builtin_shufflevector(pairs[2 * j], pairs[2 * j + 1], 2, 3, 6, 7);
+    }
+    if constexpr (W == 8) {
+        const V all = __builtin_shufflevector(quads[0], quads[1], 0, 1, 2, 3, 8, 9, 10, 11) + __builtin_shufflevector(quads[0], quads[1], 4, 5, 6, 7, 12, 13, 14, 15);
+        for (int k = 0; k < 8; ++k) total[k] = all[k];
+    } else {
+        for (int k = 0; k < 8; ++k) total[k] = quads[k >> 2][k & 3];
+    }
+}
+
 template <int T, int W>
 __attribute__((always_inline)) static inline bool glint_multinomial_exact_all_groups_pass(const glint_multinomial_thresholds& c, const int bin[8],
                                                                                           int stop_digit, const uint lanes_in[],
@@ -469,6 +502,7 @@ __attribute__((always_inline)) static inline bool glint_multinomial_exact_all_gr
         }
     }
     u32xw previous = none;
+    realxw sum[8];  // per threshold, its bin's weighted counts, one lane a group; the first T are used
     for (int k = 0; k < T; ++k) {
         u32xw in_bin = below[k] & ~previous;
         previous = below[k];
@@ -479,11 +513,16 @@ __attribute__((always_inline)) static inline bool glint_multinomial_exact_all_gr
         x = (x * 0x01010101u) >> 24u;
         // The counts (at most 32) and the fractional trial's 0 or 1 convert exactly.
         i32xw frac_in_bin = -((in_bin & frac) != 0u);
-        realxw sum = __builtin_convertvector(reinterpret_cast<i32xw>(x), realxw) * weight + __builtin_convertvector(frac_in_bin, realxw) * frac_weight;
-        real total = real(0);
-        for (int v = 0; v < W; ++v) total += sum[v];
-        weighted[bin[k]] += total;
+        sum[k] = __builtin_convertvector(reinterpret_cast<i32xw>(x), realxw) * weight + __builtin_convertvector(frac_in_bin, realxw) * frac_weight;
     }
+    // Each sum's W lanes added for all thresholds at once, pairs of lanes first: lane k of the
+    // result is threshold k's total (a transposed sum; lane by lane, thresholds one at a time, the
+    // additions and extractions were a sixth of the pass at K = 8).
+    const realxw zero = {};
+    for (int k = T; k < 8; ++k) sum[k] = zero;
+    real total[8];
+    glint_pairwise_lane_sums(sum, total);
+    for (int k = 0; k < T; ++k) weighted[bin[k]] += total[k];
     return true;
 }
 
@@ -575,20 +614,21 @@ int glint_multinomial_exact_all_groups_x8(const glint_multinomial_thresholds& c,
 }
 
 
-// glint_multinomial_exact_all for the draws i < count with draw[i] set (each with N[i] from 4 to
+// glint_multinomial_exact_all for the draws i with bit i of draws set (each with N[i] from 4 to
 // 63 and root words (words_x[i], words_y[i], words_z[i]); N total >= 1), all with tree t, their
 // lane groups (one or two a draw) four or eight at a time: adds to weighted[k], k < t.K, the sum
 // over those draws of weight[i] times their count in bin k (glint_multinomial_exact_all's counts,
 // summed in another order).
-GLINT_FN void glint_multinomial_exact_all_weighted(const glint_multinomial_tree& t, int count, const real N[12], const uint words_x[12],
-                                                   const uint words_y[12], const uint words_z[12], const int draw[12], const real weight[12],
-                                                   real weighted[8]) {
+GLINT_FN void glint_multinomial_exact_all_weighted(const glint_multinomial_tree& t, uint draws, const real N[12], const uint words_x[12],
+                                                   const uint words_y[12], const uint words_z[12], const real weight[12], real weighted[8]) {
     glint_multinomial_thresholds c = glint_multinomial_exact_all_thresholds(t);
     uint lanes[32], frac[32], state[32], step[32];  // up to 24 groups and the last pass's padding
     real group_weight[32], frac_weight[32];
     int groups = 0;
-    for (int i = 0; i < count; ++i) {
-        if (draw[i] == 0) continue;
+    // The set bits of draws, lowest first (a loop over the twelve slots with a test each was a
+    // third of this function's instructions outside the pass).
+    for (uint rest = draws; rest != 0u; rest &= rest - 1u) {
+        const int i = __builtin_ctz(rest);
         uvec2 group_lanes = glint_multinomial_exact_all_lanes(N[i]);
         uvec2 frac_lanes = glint_multinomial_exact_all_frac_lanes(group_lanes);
         real frac_share = weight[i] * (N[i] - real(int(min(N[i], GLINT_MULTINOMIAL_EXACT_ALL_MAX))));

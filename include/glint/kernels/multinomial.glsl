@@ -366,6 +366,40 @@ GLINT_FN void glint_multinomial_exact_all(real N, glint_multinomial_tree t, uvec
 }
 
 #if !defined(GLINT_GLSL)
+// The lane sums of eight vectors of W = 4 or 8 lanes, each added in pairs of lanes, then pairs of
+// pairs: total[k] = sum[k][0] + ... + sum[k][W - 1]. The vectors are combined as they are added
+// (shuffles that put vector 2j's pair sums in the even lanes and 2j + 1's in the odd ones, and so
+// on), so that seven vector additions (W = 8) do what 56 scalar ones would, in three rounds
+// rather than chains of seven.
+template <typename V>
+__attribute__((always_inline)) static inline void glint_pairwise_lane_sums(const V sum[8], real total[8]) {
+    constexpr int W = sizeof(V) / sizeof(real);
+    static_assert(W == 4 || W == 8, "four or eight lanes");
+    V pairs[4];  // lane 2i + e: vector 2j + e's lanes 2i and 2i + 1
+    for (int j = 0; j < 4; ++j) {
+        if constexpr (W == 8)
+            pairs[j] = __builtin_shufflevector(sum[2 * j], sum[2 * j + 1], 0, 8, 2, 10, 4, 12, 6, 14) +
+                       __builtin_shufflevector(sum[2 * j], sum[2 * j + 1], 1, 9, 3, 11, 5, 13, 7, 15);
+        else
+            pairs[j] = __builtin_shufflevector(sum[2 * j], sum[2 * j + 1], 0, 4, 2, 6) + __builtin_shufflevector(sum[2 * j], sum[2 * j + 1], 1, 5, 3, 7);
+    }
+    // Lanes 4 h + m: vector 4 j + m's sum over lanes 4 h to 4 h + 3.
+    V quads[2];
+    for (int j = 0; j < 2; ++j) {
+        if constexpr (W == 8)
+            quads[j] = __builtin_shufflevector(pairs[2 * j], pairs[2 * j + 1], 0, 1, 8, 9, 4, 5, 12, 13) +
+                       __builtin_shufflevector(pairs[2 * j], pairs[2 * j + 1], 2, 3, 10, 11, 6, 7, 14, 15);
+        else
+            quads[j] = __builtin_shufflevector(pairs[2 * j], pairs[2 * j + 1], 0, 1, 4, 5) + __builtin_shufflevector(pairs[2 * j], pairs[2 * j + 1], 2, 3, 6, 7);
+    }
+    if constexpr (W == 8) {
+        const V all = __builtin_shufflevector(quads[0], quads[1], 0, 1, 2, 3, 8, 9, 10, 11) + __builtin_shufflevector(quads[0], quads[1], 4, 5, 6, 7, 12, 13, 14, 15);
+        for (int k = 0; k < 8; ++k) total[k] = all[k];
+    } else {
+        for (int k = 0; k < 8; ++k) total[k] = quads[k >> 2][k & 3];
+    }
+}
+
 // C++ only: glint_multinomial_exact_all_group for W lane groups with one set of thresholds at
 // once (the IBL's grid vertices of a pixel share their probabilities), their words side by side,
 // so that the hashes, comparisons and bit counts run in vector registers (GCC's and Clang's vector
@@ -397,39 +431,6 @@ GLINT_FN void glint_multinomial_exact_all(real N, glint_multinomial_tree t, uvec
 // The pass compares with the thresholds it is given, c.c[0 .. T-1], and adds threshold j's bin to
 // weighted[bin[j]]. Where a trial is still undecided after stop_digit digits (even; 32: never),
 // it gives up and returns false before it adds anything (glint_multinomial_exact_all_groups).
-// The lane sums of eight vectors of W = 4 or 8 lanes, each added in pairs of lanes, then pairs of
-// pairs: total[k] = sum[k][0] + ... + sum[k][W - 1]. The vectors are combined as they are added
-// (shuffles that put vector 2j's pair sums in the even lanes and 2j + 1's in the odd ones, and so
-// on), so that three rounds of additions do what 8 (W - 1) scalar ones would.
-template <typename V>
-__attribute__((always_inline)) static inline void glint_pairwise_lane_sums(const V sum[8], real total[8]) {
-    constexpr int W = sizeof(V) / sizeof(real);
-    static_assert(W == 4 || W == 8, "four or eight lanes");
-    V pairs[4];  // lane 2i + e: vector 2j + e's lanes 2i and 2i + 1
-    for (int j = 0; j < 4; ++j) {
-        if constexpr (W == 8)
-            pairs[j] = __builtin_shufflevector(sum[2 * j], sum[2 * j + 1], 0, 8, 2, 10, 4, 12, 6, 14) +
-                       __builtin_shufflevector(sum[2 * j], sum[2 * j + 1], 1, 9, 3, 11, 5, 13, 7, 15);
-        else
-            pairs[j] = __builtin_shufflevector(sum[2 * j], sum[2 * j + 1], 0, 4, 2, 6) + __builtin_shufflevector(sum[2 * j], sum[2 * j + 1], 1, 5, 3, 7);
-    }
-    // Lanes 4 h + m: vector 4 j + m's sum over lanes 4 h to 4 h + 3.
-    V quads[2];
-    for (int j = 0; j < 2; ++j) {
-        if constexpr (W == 8)
-            quads[j] = __builtin_shufflevector(pairs[2 * j], pairs[2 * j + 1], 0, 1, 8, 9, 4, 5, 12, 13) +
-                       __builtin_shufflevector(pairs[2 * j], pairs[2 * j + 1], 2, 3, 10, 11, 6, 7, 14, 15);
-        else
-            quads[j] = __builtin_shufflevector(pairs[2 * j], pairs[2 * j + 1], 0, 1, 4, 5) + __builtin_shufflevector(pairs[2 * j], pairs[2 * j + 1], 2, 3, 6, 7);
-    }
-    if constexpr (W == 8) {
-        const V all = __builtin_shufflevector(quads[0], quads[1], 0, 1, 2, 3, 8, 9, 10, 11) + __builtin_shufflevector(quads[0], quads[1], 4, 5, 6, 7, 12, 13, 14, 15);
-        for (int k = 0; k < 8; ++k) total[k] = all[k];
-    } else {
-        for (int k = 0; k < 8; ++k) total[k] = quads[k >> 2][k & 3];
-    }
-}
-
 template <int T, int W>
 __attribute__((always_inline)) static inline bool glint_multinomial_exact_all_groups_pass(const glint_multinomial_thresholds& c, const int bin[8],
                                                                                           int stop_digit, const uint lanes_in[],
@@ -515,9 +516,9 @@ __attribute__((always_inline)) static inline bool glint_multinomial_exact_all_gr
         i32xw frac_in_bin = -((in_bin & frac) != 0u);
         sum[k] = __builtin_convertvector(reinterpret_cast<i32xw>(x), realxw) * weight + __builtin_convertvector(frac_in_bin, realxw) * frac_weight;
     }
-    // Each sum's W lanes added for all thresholds at once, pairs of lanes first: lane k of the
-    // result is threshold k's total (a transposed sum; lane by lane, thresholds one at a time, the
-    // additions and extractions were a sixth of the pass at K = 8).
+    // Each sum's W lanes added for all thresholds at once, pairs of lanes first (lane by lane,
+    // one threshold after another, they were chains of dependent additions: the IBL frames of
+    // glint_frame_loop ibl K 100 took 4% (K = 4) and 6% (K = 8) longer; DEVELOPERS.md).
     const realxw zero = {};
     for (int k = T; k < 8; ++k) sum[k] = zero;
     real total[8];
@@ -625,8 +626,8 @@ GLINT_FN void glint_multinomial_exact_all_weighted(const glint_multinomial_tree&
     uint lanes[32], frac[32], state[32], step[32];  // up to 24 groups and the last pass's padding
     real group_weight[32], frac_weight[32];
     int groups = 0;
-    // The set bits of draws, lowest first (a loop over the twelve slots with a test each was a
-    // third of this function's instructions outside the pass).
+    // The set bits of draws, lowest first (callgrind, ibl 4 1: 34 instructions a pixel, where a
+    // loop over the twelve slots with a test each took 77).
     for (uint rest = draws; rest != 0u; rest &= rest - 1u) {
         const int i = __builtin_ctz(rest);
         uvec2 group_lanes = glint_multinomial_exact_all_lanes(N[i]);

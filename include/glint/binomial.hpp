@@ -119,7 +119,7 @@
 // once), and where u2 lies below a lower bound on the share that the clamp takes to the near count
 // (a polynomial in N p_near, glint_binomial_clamped_mass_bound) it returns that count without the
 // middle's fit or the quantile: at N p_near = 0.1, 0.910 of the middle's draws (of 0.916 that
-// clamp). The cached kernel (glint_binomial_unbiased_cached, the grid's) keeps its cache instead.
+// clamp). The cached kernel (glint_binomial_unbiased_cached, the IBL root's) keeps its cache instead.
 // Sparse glints (N p << 1), the common case, then cost two comparisons. Where the middle is
 // drawn, its setup (step 4) costs a log2, two sqrt and 21 to 24 polynomial terms per output in
 // the band, or a sqrt and two polynomials from N p = 3 on (and a log from p_near = 1/10 on and an

@@ -939,13 +939,21 @@ GLINT_FN glint_binomial_walk_state glint_binomial_walk_start(int M, real q) {
     return w;
 }
 
-// P(n > k) summed afresh from the mass at k outwards.
+// P(n > k) summed afresh from the mass at k outwards. It stops where the masses can no longer
+// change the sum: once a mass ratio t_j is at most 1/2 (they fall with j, so every later mass is at
+// most half the one before) and the mass is below 2^-25 of the sum (2^-54 in double), every later
+// mass lies below half an ulp of the sum and rounds away: the same sum, bit for bit, without the
+// rest of the loop's divisions. In a sparse draw (M q small, where the walk's first step falls
+// below its rescue bound at once) that is a few masses instead of about M.
 GLINT_FN real glint_binomial_walk_tail(int M, real ratio, real mass, int k) {
     real sum = real(0);
+    real negligible = GLINT_DOUBLE ? real(5.5511151231257827e-17) : real(2.98023223876953125e-8);  // 2^-54, 2^-25
     for (int j = k + 1; j <= GLINT_BINOMIAL_WALK_MAX_TRIALS; ++j) {
         if (j > M) break;
-        mass *= real(M + 1 - j) * ratio / real(j);
+        real t = real(M + 1 - j) * ratio / real(j);
+        mass *= t;
         sum += mass;
+        if (t <= real(0.5) && mass < sum * negligible) break;
     }
     return sum;
 }
@@ -1202,7 +1210,8 @@ GLINT_FN_INLINE glint_binomial glint_binomial_unbiased(real N, real p, real u1, 
 }
 
 // The mean-preserving sampler's parameters at one (N, p), kept between draws that share them (the
-// three triangle vertices of a grid lattice point draw with the same N and p): the ends once
+// IBL multinomial's root draws of a lattice point's three triangle vertices; the grid's draws no
+// longer use it, their corners mostly drawing once a pixel behind the skip test): the ends once
 // evaluated, the middle once set up. One cache serves one `method`.
 struct glint_binomial_cache {
     real N;     // N and p as clamped, valid where state > 0

@@ -39,6 +39,7 @@
 // smooth-result gate may return E[R] first, which is the limit of a huge density).
 #pragma once
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 
@@ -156,15 +157,28 @@ grid_estimate<real> grid_sample(grid_pixel<real>& px, const grid_params<real>& g
     return detail::glsl::kernels<real>::glint_grid_sample_pixel(px, detail::to_kernel(g), light);
 }
 
-// Every light of a list on one footprint: out[i] = grid_sample(uv, duvdx, duvdy, g, lights[i]),
-// with the footprint's setup done once. No allocation; count may be 0. (GLSL:
-// glint_grid_sample_lights, up to GLINT_GRID_MAX_LIGHTS = 8 lights.)
+// Every light of a list on one pixel's footprint (grid_pixel_setup, one lattice point's too):
+// out[i] = grid_sample(px, g, lights[i]), bit for bit; count may be 0, nothing allocated. The
+// way to shade several lights: where the CPU has AVX2 (float), eight lights at a time share their
+// per-light setup and skip test in vector lanes, so that an extra light costs a fraction of a
+// grid_sample call (kernels/grid.glsl, glint_grid_sample_pixel_lights; docs/grid.md measures it).
+template <class real>
+void grid_sample_lights(grid_pixel<real>& px, const grid_params<real>& g, const grid_light<real>* lights, std::size_t count,
+                        grid_estimate<real>* out) {
+    const auto k = detail::to_kernel(g);
+    for (std::size_t first = 0; first < count; first += 1u << 20)  // the kernel counts in int
+        detail::glsl::kernels<real>::glint_grid_sample_pixel_lights(px, k, lights + first, static_cast<int>(std::min<std::size_t>(count - first, 1u << 20)),
+                                                                    out + first);
+}
+
+// The same from the footprint: out[i] = grid_sample(uv, duvdx, duvdy, g, lights[i]), the
+// footprint's setup done once. (GLSL: glint_grid_sample_lights, up to GLINT_GRID_MAX_LIGHTS = 8
+// lights, one after another.)
 template <class real>
 void grid_sample_lights(const vec2_t<real>& uv, const vec2_t<real>& duvdx, const vec2_t<real>& duvdy, const grid_params<real>& g,
                         const grid_light<real>* lights, std::size_t count, grid_estimate<real>* out) {
-    const auto k = detail::to_kernel(g);
-    auto px = detail::glsl::kernels<real>::glint_grid_pixel_setup(uv, duvdx, duvdy, k);
-    for (std::size_t i = 0; i < count; ++i) out[i] = detail::glsl::kernels<real>::glint_grid_sample_pixel(px, k, lights[i]);
+    auto px = grid_pixel_setup(uv, duvdx, duvdy, g);
+    grid_sample_lights(px, g, lights, count, out);
 }
 
 // R / E[R], the factor on the smooth result (the kernels' glint_modulation; 0 if E[R] = 0), for

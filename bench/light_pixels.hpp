@@ -13,9 +13,9 @@
 namespace glint_bench {
 
 // Several point lights on glinty pixels: 1024 pixels of the showcase's flake paint (GGX, alpha
-// 0.25, ln density 5, footprints of 0.4 to 0.8 uv units, N about 20 to 80), 8 point lights each.
+// 0.25, ln density 5, footprints of 0.4 to 0.8 uv units, N about 20 to 80), 16 point lights each.
 struct light_pixels {
-    static constexpr int pixels = 1024, lights = 8;
+    static constexpr int pixels = 1024, lights = 16;
     std::vector<glm::vec2> uv, duvdx, duvdy;
     std::vector<glm::vec3> wo, wi;  // wi: lights per pixel
     light_pixels() {
@@ -57,25 +57,40 @@ inline float light_pixel_lattice_u(int i, int mode) {
 }
 
 // Pixel i of lp shaded by its first k lights. mode 0: smooth; 1: glints on one footprint shared by
-// every light (grid_pixel); 2: glints through a footprint of each light's own (grid_sample each);
-// 3: as 1 on one lattice point drawn per pixel (grid_pixel_setup with a lattice_u).
+// every light (grid_pixel and the list of lights, grid_sample_lights); 2: glints through a
+// footprint of each light's own (grid_sample each); 3: as 1 on one lattice point drawn per pixel
+// (grid_pixel_setup with a lattice_u); 4: as 1, one light at a time (grid_sample(px, ...) each).
 inline glm::vec3 shade_light_pixel(const light_pixels& lp, int i, int k, int mode) {
     const auto at = static_cast<std::size_t>(i);
     const glint::grid_params<float> g = light_pixel_params(i);
     const float dh = glint::total_area(glint::ndf::ggx, glm::vec2(0.25f));
-    auto px = glint::grid_pixel_setup(lp.uv[at], lp.duvdx[at], lp.duvdy[at], g, light_pixel_lattice_u(i, mode));
+    const glm::vec3* wi = lp.wi.data() + i * light_pixels::lights;
     glm::vec3 sum(0);
+    auto px = glint::grid_pixel_setup(lp.uv[at], lp.duvdx[at], lp.duvdy[at], g, light_pixel_lattice_u(i, mode));
+    if (mode == 0 || mode == 2 || mode == 4) {
+        for (int l = 0; l < k; ++l) {
+            glm::vec3 hv;
+            const glm::vec3 c = smooth_point(wi[l], lp.wo[at], hv);
+            if (mode == 0) {
+                sum += c;
+                continue;
+            }
+            const auto light = glint::grid_point_light(glint::ndf::ggx, glm::vec2(0.25f), dh, hv);
+            const auto e = mode == 4 ? glint::grid_sample(px, g, light) : glint::grid_sample(lp.uv[at], lp.duvdx[at], lp.duvdy[at], g, light);
+            sum += c * glint::modulation(e);
+        }
+        return sum;
+    }
+    glm::vec3 colour[light_pixels::lights];
+    glint::grid_light<float> light[light_pixels::lights];
+    glint::grid_estimate<float> e[light_pixels::lights];
     for (int l = 0; l < k; ++l) {
         glm::vec3 hv;
-        const glm::vec3 c = smooth_point(lp.wi[static_cast<std::size_t>(i * light_pixels::lights + l)], lp.wo[at], hv);
-        if (mode == 0) {
-            sum += c;
-            continue;
-        }
-        const auto light = glint::grid_point_light(glint::ndf::ggx, glm::vec2(0.25f), dh, hv);
-        const auto e = mode != 2 ? glint::grid_sample(px, g, light) : glint::grid_sample(lp.uv[at], lp.duvdx[at], lp.duvdy[at], g, light);
-        sum += c * glint::modulation(e);
+        colour[l] = smooth_point(wi[l], lp.wo[at], hv);
+        light[l] = glint::grid_point_light(glint::ndf::ggx, glm::vec2(0.25f), dh, hv);
     }
+    glint::grid_sample_lights(px, g, light, static_cast<std::size_t>(k), e);
+    for (int l = 0; l < k; ++l) sum += colour[l] * glint::modulation(e[l]);
     return sum;
 }
 

@@ -337,3 +337,37 @@ TEST_CASE("the walk (2 < N < 40) is the exact binomial at integer N, and for rea
         CHECK(std::fabs(static_cast<double>(w.mass) / std::pow(0.5, M) - 1) <= 1e-6);
     }
 }
+
+// The walk's rescue sum (glint_binomial_walk_tail) stops where every later mass rounds away: it
+// must equal, bit for bit, the sum over every mass up to M (the loop without the stop), in float
+// and double, over M from 3 to 40, q from 1e-7 to 1/2 and every start k below M, with masses from
+// the walk's own start (which is where the stop saves the most: sparse draws, small M q).
+template <class real>
+long walk_tail_differences(long& compared) {
+    using KR = glint::detail::glsl::kernels<real>;
+    long differ = 0;
+    for (int M = 3; M <= 40; ++M)
+        for (double lq = -7; lq <= std::log10(0.5) + 1e-9; lq += 0.25) {
+            const real q = static_cast<real>(std::pow(10.0, lq));
+            const real ratio = q / (real(1) - q);
+            for (int k = 0; k < M; ++k) {
+                real mass = KR::glint_binomial_walk_start(M, q).mass;  // b(0), then b(k) by the recurrence
+                for (int j = 1; j <= k; ++j) mass *= real(M + 1 - j) * ratio / real(j);
+                real full = 0, m = mass;
+                for (int j = k + 1; j <= M; ++j) {
+                    m *= real(M + 1 - j) * ratio / real(j);
+                    full += m;
+                }
+                differ += KR::glint_binomial_walk_tail(M, ratio, mass, k) != full;
+                ++compared;
+            }
+        }
+    return differ;
+}
+
+TEST_CASE("the walk's tail sum stops early without changing a bit of it, in float and double") {
+    long compared = 0;
+    const long differ = walk_tail_differences<float>(compared) + walk_tail_differences<double>(compared);
+    MESSAGE(compared << " tail sums, " << differ << " differ from the sum over every mass");
+    CHECK(differ == 0);
+}

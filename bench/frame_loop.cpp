@@ -21,9 +21,10 @@
 //                                          7 alternating loops of 2e6 draws
 //   glint_frame_loop lights K MODE REPS    the report's several-lights workload
 //                                          (bench/light_pixels.hpp): its 1024 pixels with K
-//                                          lights, MODE 0 smooth, 1 one shared footprint, 2 a
-//                                          footprint per light, 3 as 1 on one lattice point,
-//                                          REPS times
+//                                          lights (up to 16), MODE 0 smooth, 1 one shared
+//                                          footprint and the list of lights, 2 a footprint per
+//                                          light, 3 as 1 on one lattice point, 4 as 1 one light
+//                                          at a time, REPS times
 // Each prints a sum of its results, so that two builds can be checked to compute the same.
 #include <algorithm>
 #include <chrono>
@@ -173,6 +174,10 @@ int main(int argc, char** argv) {
     } else if (argc == 5 && !std::strcmp(mode, "lights")) {
         const glint_bench::light_pixels lp;
         const int k = std::atoi(argv[2]), shading = std::atoi(argv[3]);
+        if (k < 0 || k > glint_bench::light_pixels::lights || shading < 0 || shading > 4) {
+            std::fprintf(stderr, "lights K MODE REPS: K from 0 to %d lights, MODE 0 to 4\n", glint_bench::light_pixels::lights);
+            return 2;
+        }
         for (int rep = 0; rep < std::atoi(argv[4]); ++rep)
             for (int i = 0; i < glint_bench::light_pixels::pixels; ++i) sum += static_cast<double>(glint_bench::shade_light_pixel(lp, i, k, shading).x);
     } else {

@@ -826,7 +826,7 @@ GLINT_FN glint_grid_estimates glint_grid_sample_lights(vec2 uv, vec2 duvdx, vec2
 // density needs libm's exp per corner) sends its batch to the single-light path; lists longer
 // than eight go in batches of eight. Callgrind (glint_frame_loop lights 16 1 4, whose pixels shade
 // 16 point lights through the list): 91.2M instructions with each light through
-// glint_grid_sample_pixel, 55.3M in batches, the same sum (docs/grid.md times it).
+// glint_grid_sample_pixel, 54.3M in batches, the same sum (docs/grid.md times it).
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(GLINT_NO_AVX2)
 typedef float glint_f32x8 __attribute__((vector_size(32)));
 typedef int glint_i32x8 __attribute__((vector_size(32)));
@@ -932,10 +932,10 @@ __attribute__((noinline, target("avx2"))) static void glint_grid_sample_lights_x
     if (!px.ready) glint_grid_pixel_vertices(px, g);
     // The live corners and the skip test (glint_skip_test_masks: the same integer hash, float
     // product and sum per (vertex, corner)), vertex by vertex against the eight lights. Each
-    // corner's bit is masked by its lanes' liveness inside the test (bit[j]), and where the skip
-    // test does not apply (a published variant) the bound is FLT_MAX 2^-24 ... times the vertex's
-    // scale, which every vertex passes: the live corners of every vertex, as the single-light
-    // path's (b | always) & live, with two vectors fewer in the loop (`always` had spilled to the
+    // corner's bit carries its lanes' liveness inside the test (bit[j]), and where the skip test
+    // does not apply (a published variant) p24 is FLT_MAX instead of p_j 2^24, a bound that every
+    // vertex with a scale passes: the live corners of every vertex, as the single-light path's
+    // (b | always) & live, with two vectors fewer in the loop (`always` had spilled to the
     // stack). A slot without a vertex (scale 0) gets bits from u1 < 1e-5 alone there, which
     // nothing reads: its weight 0 keeps it from drawing.
     const bool skip_test = glint_skip_test_applies(g);

@@ -34,6 +34,18 @@ static bool glint_cpu_avx2() {
 #endif
 }
 
+// C++ only: glint_hash_u32 lane-wise on a vector of words, in place (any vector width of GCC's
+// and Clang's vector extension; in place, as glint_pcg3d_vectors, since a wide vector returned by
+// value from code built for the baseline changes the ABI): the same words, bit for bit.
+template <class V>
+__attribute__((always_inline)) static inline void glint_hash_u32_vector(V& x) {
+    x ^= x >> 16u;
+    x *= 0x7feb352du;
+    x ^= x >> 15u;
+    x *= 0x846ca68bu;
+    x ^= x >> 16u;
+}
+
 // C++ only: glint_pcg3d lane-wise on three vectors of words (any vector width of GCC's and
 // Clang's vector extension): the same words, bit for bit (unsigned arithmetic wraps alike).
 template <class V>

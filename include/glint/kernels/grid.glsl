@@ -663,12 +663,8 @@ __attribute__((noinline, target("avx2"))) static glint_draw_masks glint_skip_tes
             for (int i = 4; i < 8; ++i) word[i] = 0u, scale[i] = real(0);
         i32x8 bits = {};
         for (int j = 0; j < 4; ++j) {
-            u32x8 h = word ^ corner_key[j];  // glint_hash_u32, lane-wise
-            h ^= h >> 16u;
-            h *= 0x7feb352du;
-            h ^= h >> 15u;
-            h *= 0x846ca68bu;
-            h ^= h >> 16u;
+            u32x8 h = word ^ corner_key[j];
+            glint_hash_u32_vector(h);
             realx8 below = __builtin_convertvector(reinterpret_cast<i32x8>(h >> 8u), realx8);  // below 2^24: exact
             realx8 bound = scale * (corner_p[j] * real(16777216.0)) + real(167.77216);
             bits |= __builtin_convertvector(below < bound, i32x8) & (1 << j);
@@ -908,13 +904,8 @@ __attribute__((noinline, target("avx2"))) static void glint_grid_sample_lights_x
         const f32x8 jac = __builtin_ia32_sqrtps256(one + (csx * csx + csy * csy)) * norm;
         const f32x8 p_point = glint_clamp_x8(scale * (jac / ((one + u2) * (one + u2))), 0.0f, 1.0f);
         p[j] = point ? p_point : p_extended;
-        u32x8 k = reinterpret_cast<u32x8>(cx) * 0x9e3779b9u + reinterpret_cast<u32x8>(cy);  // glint_slope_cell_key
-        k ^= k >> 16u;
-        k *= 0x7feb352du;
-        k ^= k >> 15u;
-        k *= 0x846ca68bu;
-        k ^= k >> 16u;
-        key[j] = k;
+        key[j] = reinterpret_cast<u32x8>(cx) * 0x9e3779b9u + reinterpret_cast<u32x8>(cy);  // glint_slope_cell_key
+        glint_hash_u32_vector(key[j]);
     }
     const f32x8 expected = (mu[0] * p[0] + mu[1] * p[1]) + (mu[2] * p[2] + mu[3] * p[3]);
     f32x8 q[4];
@@ -954,11 +945,7 @@ __attribute__((noinline, target("avx2"))) static void glint_grid_sample_lights_x
         i32x8 b = {};
         for (int j = 0; j < 4; ++j) {
             u32x8 h = key[j] ^ hx;
-            h ^= h >> 16u;
-            h *= 0x7feb352du;
-            h ^= h >> 15u;
-            h *= 0x846ca68bu;
-            h ^= h >> 16u;
+            glint_hash_u32_vector(h);
             const f32x8 below = __builtin_convertvector(reinterpret_cast<i32x8>(h >> 8u), f32x8);  // below 2^24: exact
             b |= (below < sc * p24[j] + 167.77216f) & bit[j];                                       // 1e-5 2^24
         }

@@ -487,11 +487,7 @@ __attribute__((always_inline)) static inline bool glint_multinomial_exact_all_gr
         if (digit == stop_digit) return false;
         for (int twice = 0; twice < 2; ++twice) {
             u32xw word = state;  // glint_hash_u32, W at once
-            word ^= word >> 16u;
-            word *= 0x7feb352du;
-            word ^= word >> 15u;
-            word *= 0x846ca68bu;
-            word ^= word >> 16u;
+            glint_hash_u32_vector(word);
             state += step;
             for (int k = 0; k < T; ++k) {
                 u32xw c_digit = none - (threshold[k] >> 31u);  // all ones where c_k's digit is 1

@@ -4,8 +4,8 @@
 //   glint_frame_loop point-smooth FRAMES   the same frame shaded smooth
 //   glint_frame_loop point-stochastic FRAMES  the glint frame on one lattice point per pixel
 //   glint_frame_loop ibl K FRAMES          glint::ibl_sample on bench/report_ibl.cpp's sphere; prints
-//                                          the frames' mean wall time too (without the
-//                                          environment's build), for A/B timing of two builds
+//                                          the frames' mean and least wall time too (without
+//                                          the environment's build), for A/B timing of two builds
 //   glint_frame_loop ibl-stochastic K FRAMES  the same on one lattice point per pixel
 //                                          (sunset.exr); count it alone with
 //                                          --toggle-collect='glint_ibl_estimate*'
@@ -108,7 +108,9 @@ int main(int argc, char** argv) {
         const float sa = 0.35f, dh = env.total_area(sa * sa);
         const auto start = std::chrono::steady_clock::now();
         const int frames = std::atoi(argv[3]);
-        for (int frame = 0; frame < frames; ++frame)
+        double least = 1e30;
+        for (int frame = 0; frame < frames; ++frame) {
+            const auto frame_start = std::chrono::steady_clock::now();
             for (int y = 0; y < 100; ++y)
                 for (int x = 0; x < 160; ++x) {
                     glm::vec3 n;
@@ -122,8 +124,10 @@ int main(int argc, char** argv) {
                     const auto e = glint_ibl_estimate(uv, g, env, s, env.visible_area(n.z, sa), dh, lattice_u);
                     sum += static_cast<double>(glint::modulation(e));
                 }
+            least = std::min(least, std::chrono::duration<double>(std::chrono::steady_clock::now() - frame_start).count());
+        }
         const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-        std::printf("%s: %.0f us a frame (mean of %d)\n", mode, 1e6 * seconds / std::max(frames, 1), frames);
+        std::printf("%s: %.0f us a frame (mean of %d; the least %.0f us)\n", mode, 1e6 * seconds / std::max(frames, 1), frames, 1e6 * least);
     } else if (argc == 4 && (!std::strcmp(mode, "ibl-lookup") || !std::strcmp(mode, "ibl-radiance"))) {
         const bool all = !std::strcmp(mode, "ibl-lookup");
         const auto env = sunset_environment(std::atoi(argv[2]));

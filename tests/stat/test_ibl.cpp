@@ -130,6 +130,60 @@ TEST_CASE("ibl: the radiance-only lookup returns exactly the full lookup's radia
     CHECK(differ == 0);
 }
 
+// The trilinear lookup from the roughness chain's arrays, as GL_LINEAR and the lookup's order of
+// sums define it: level m0's four taps weighted (1 - t) x bilinear, then m1's t x bilinear where
+// t > 0. `both_levels` false: a spoilt variant that reads level m0 alone.
+std::vector<float> reference_lookup(const glint::environment& env, const glm::vec3& d, float sa, bool both_levels) {
+    const auto& chain = env.roughness_chain();
+    const glm::vec2 uv = K::glint_equirect_uv(d);
+    const float f = std::clamp(sa, 0.0f, 1.0f) * static_cast<float>(chain.size() - 1);
+    const std::size_t m0 = std::min(static_cast<std::size_t>(f), chain.size() - 1), m1 = std::min(m0 + 1, chain.size() - 1);
+    const float t = f - static_cast<float>(m0);
+    const std::size_t C = static_cast<std::size_t>(env.channels());
+    std::vector<float> v(C, 0.0f);
+    for (int side = 0; side < ((t > 0 && both_levels) ? 2 : 1); ++side) {
+        const auto& m = chain[side == 0 ? m0 : m1];
+        const auto taps = K::glint_bilinear(uv, m.width, m.height);
+        for (int i = 0; i < 4; ++i) {
+            const float w = (side == 0 ? 1 - t : t) * taps.weight[i];
+            const float* px = &m.data[(static_cast<std::size_t>(taps.texel[i].y) * static_cast<std::size_t>(m.width) + static_cast<std::size_t>(taps.texel[i].x)) * C];
+            for (std::size_t c = 0; c < C; ++c) v[c] += w * px[c];
+        }
+    }
+    return v;
+}
+
+TEST_CASE("ibl: the lookup equals the trilinear sum over the roughness chain's texels bit for bit (K = 4 and 8)") {
+    // 2000 random directions at six roughnesses (0.2, 0.8 and 1.0 fall on a level: one level's
+    // taps); a spoilt reference that drops the second level must differ wherever there is one.
+    int n = 0, differ = 0, differ_radiance = 0, spoilt_differ = 0;
+    for (int levels : {4, 8}) {
+        const auto& env = environment_of("city", levels);
+        for (std::uint32_t i = 0; i < 2000; ++i) {
+            const glm::vec3 d = direction(i, 3);
+            for (float sa : {0.0f, 0.1f, 0.2f, 0.45f, 0.8f, 1.0f}) {
+                const auto ref = reference_lookup(env, d, sa, true), spoilt = reference_lookup(env, d, sa, false);
+                const auto s = env.lookup(d, sa);
+                auto same = [&](const std::vector<float>& r) {
+                    bool eq = s.radiance == glm::vec3(r[0], r[1], r[2]);
+                    for (int k = 0; k < 8; ++k) eq = eq && s.indicators.w[k] == (k < levels ? r[3 + static_cast<std::size_t>(k)] : 0.0f);
+                    return eq;
+                };
+                differ += same(ref) ? 0 : 1;
+                differ_radiance += (env.lookup_radiance(d, sa) == glm::vec3(ref[0], ref[1], ref[2])) ? 0 : 1;
+                spoilt_differ += same(spoilt) ? 0 : 1;
+                ++n;
+            }
+        }
+    }
+    MESSAGE(n << " lookups: " << differ << " (all channels) and " << differ_radiance << " (radiance alone) differ from the reference; the spoilt one differs in "
+              << spoilt_differ);
+    CHECK(n == 24000);
+    CHECK(differ == 0);
+    CHECK(differ_radiance == 0);
+    CHECK(spoilt_differ == 8000);  // sqrt(alpha) 0.1 and 0.45, 2000 directions, two K
+}
+
 TEST_CASE("ibl: white furnace (KK25 Fig. 7): the mean of 4096 realisations equals the smooth result at densities e^-2, 1, e^2") {
     const int w = 64, h = 32;
     const std::vector<float> white(3 * w * h, 1.0f);

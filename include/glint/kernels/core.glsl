@@ -46,6 +46,22 @@ __attribute__((always_inline)) static inline void glint_hash_u32_vector(V& x) {
     x ^= x >> 16u;
 }
 
+// C++ only: eight values held as two vectors of four (value 4 h + i in lane i of v[h]) scaled
+// down by their total where it is above 1, into out, as the GLSL loops of glint_ibl_probabilities
+// and glint_multinomial_tree_root do it: the total summed in index order, which a float sum must
+// keep. Returns the scale (1 or 1 / total) and the total in `total`.
+template <class V>
+__attribute__((always_inline)) static inline real glint_scale_to_unit_sum(const V v[2], real out[8], real& total) {
+    total = real(0);
+    for (int k = 0; k < 8; ++k) total += v[k >> 2][k & 3];
+    const real scale = (total > real(1)) ? real(1) / total : real(1);
+    for (int h = 0; h < 2; ++h) {
+        const V scaled = v[h] * scale;
+        std::memcpy(out + 4 * h, &scaled, sizeof(scaled));
+    }
+    return scale;
+}
+
 // C++ only: glint_pcg3d lane-wise on three vectors of words (any vector width of GCC's and
 // Clang's vector extension): the same words, bit for bit (unsigned arithmetic wraps alike).
 template <class V>

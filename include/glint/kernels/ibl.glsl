@@ -65,8 +65,7 @@ GLINT_FN glint_multinomial_probabilities glint_ibl_probabilities(GLINT_IN(glint_
     for (int k = 0; k < 8; ++k) pr.p[k] = ((k < K) ? clamp(e_d * ind.w[k] / max(d_h, real(1)), real(0), real(1)) : real(0)) * scale;
 #else
     // The same values four levels at a time (GCC kept the loops scalar: sixteen divisions a
-    // pixel); the clamp as GLM's max then min, which keep a NaN; the total summed in the loop's
-    // order, which a float sum must keep.
+    // pixel); the clamp as GLM's max then min, which keep a NaN.
     typedef real realx4 __attribute__((vector_size(4 * sizeof(real))));
     typedef decltype(realx4{} < realx4{}) maskx4;
     const realx4 none = {}, one = none + real(1);
@@ -80,13 +79,8 @@ GLINT_FN glint_multinomial_probabilities glint_ibl_probabilities(GLINT_IN(glint_
         const maskx4 level = {4 * h, 4 * h + 1, 4 * h + 2, 4 * h + 3};
         v[h] = (level < K) ? x : none;
     }
-    real total = real(0);
-    for (int k = 0; k < 8; ++k) total += v[k >> 2][k & 3];
-    real scale = (total > real(1)) ? real(1) / total : real(1);
-    for (int h = 0; h < 2; ++h) {
-        const realx4 scaled = v[h] * scale;
-        std::memcpy(pr.p + 4 * h, &scaled, sizeof(scaled));
-    }
+    real total;
+    glint_scale_to_unit_sum(v, pr.p, total);
 #endif
     return pr;
 }

@@ -144,8 +144,7 @@ GLINT_FN glint_multinomial_tree glint_multinomial_tree_root(GLINT_IN(glint_multi
     for (int k = 0; k < 8; ++k) t.p[k] = ((k < t.K) ? max(probs.p[k], real(0)) : real(0)) * scale;
 #else
     // The same values four bins at a time (GCC kept both loops scalar: 86 instructions a pixel of
-    // the IBL's K = 4 estimate); max as GLM's (x < 0 ? 0 : x, which keeps a NaN); the total summed
-    // in the loop's order, which a float sum must keep.
+    // the IBL's K = 4 estimate); max as GLM's (x < 0 ? 0 : x, which keeps a NaN).
     typedef real realx4 __attribute__((vector_size(4 * sizeof(real))));
     typedef decltype(realx4{} < realx4{}) maskx4;
     const realx4 none = {};
@@ -157,13 +156,8 @@ GLINT_FN glint_multinomial_tree glint_multinomial_tree_root(GLINT_IN(glint_multi
         const maskx4 bin = {4 * h, 4 * h + 1, 4 * h + 2, 4 * h + 3};
         v[h] = (bin < t.K) ? x : none;
     }
-    real total = real(0);
-    for (int k = 0; k < 8; ++k) total += v[k >> 2][k & 3];
-    real scale = (total > real(1)) ? real(1) / total : real(1);
-    for (int h = 0; h < 2; ++h) {
-        const realx4 scaled = v[h] * scale;
-        std::memcpy(t.p + 4 * h, &scaled, sizeof(scaled));
-    }
+    real total;
+    const real scale = glint_scale_to_unit_sum(v, t.p, total);
 #endif
     t.total = min(total * scale, real(1));
     for (int h = 0; h < 7; ++h) t.q[h] = real(0.5);

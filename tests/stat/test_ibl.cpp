@@ -130,6 +130,8 @@ TEST_CASE("ibl: the radiance-only lookup returns exactly the full lookup's radia
     CHECK(differ == 0);
 }
 
+namespace {
+
 // The trilinear lookup from the roughness chain's arrays, as GL_LINEAR and the lookup's order of
 // sums define it: level m0's four taps weighted (1 - t) x bilinear, then m1's t x bilinear where
 // t > 0. `both_levels` false: a spoilt variant that reads level m0 alone.
@@ -152,6 +154,8 @@ std::vector<float> reference_lookup(const glint::environment& env, const glm::ve
     }
     return v;
 }
+
+}  // namespace
 
 TEST_CASE("ibl: the lookup equals the trilinear sum over the roughness chain's texels bit for bit (K = 4 and 8)") {
     // 2000 random directions at six roughnesses (0.2, 0.8 and 1.0 fall on a level: one level's

@@ -25,6 +25,12 @@
 //                                          footprint and the list of lights, 2 a footprint per
 //                                          light, 3 as 1 on one lattice point, 4 as 1 one light
 //                                          at a time, REPS times
+//   glint_frame_loop lobe-tree MAP PASSES  the report's lobe-forest evaluations
+//                                          (bench/lobe_tree_workload.hpp): MAP metal (scratched
+//                                          metal, Gaussian lobes, delta_k 0.3) or pyramids
+//                                          (Beckmann lobes, delta_k 30), its 200 queries PASSES
+//                                          times; prints the least pass's ns a query. Count the
+//                                          queries alone with --toggle-collect='lobe_forest_eval*'
 // Each prints a sum of its results, so that two builds can be checked to compute the same.
 #include <algorithm>
 #include <chrono>
@@ -40,6 +46,7 @@
 #include "../examples/lights_scene.hpp"
 #include "launder.hpp"
 #include "light_pixels.hpp"
+#include "lobe_tree_workload.hpp"
 
 #ifndef GLINT_DATA_DIR
 #error "GLINT_DATA_DIR must point at the project's data/ folder"
@@ -85,6 +92,9 @@ bool sphere_normal(int x, int y, glm::vec3& n) {
     n = glm::vec3(px, py, std::sqrt(1 - rr));
     return true;
 }
+
+// One lobe-forest query, out of line for callgrind's --toggle-collect.
+__attribute__((noinline)) float lobe_forest_eval(const glint_bench::forest& f, const glint_bench::query& q) { return f.eval(q.fp, q.s); }
 
 int main(int argc, char** argv) {
     const char* mode = argc > 1 ? argv[1] : "";
@@ -184,8 +194,25 @@ int main(int argc, char** argv) {
         }
         for (int rep = 0; rep < std::atoi(argv[4]); ++rep)
             for (int i = 0; i < glint_bench::light_pixels::pixels; ++i) sum += static_cast<double>(glint_bench::shade_light_pixel(lp, i, k, shading).x);
+    } else if (argc == 4 && !std::strcmp(mode, "lobe-tree") && (!std::strcmp(argv[2], "metal") || !std::strcmp(argv[2], "pyramids"))) {
+        // bench/report_lobe_tree.cpp's two workloads: the queries from its direct P-NDF, the forest
+        // as its delta_k 0.3 row (metal) or its Beckmann row (pyramids).
+        const bool metal = !std::strcmp(argv[2], "metal");
+        const auto h = glint_bench::quilt(glint_bench::sample(metal ? glint::pattern::scratched_metal : glint::pattern::pyramids, 256), 2048);
+        const float sigma_r = metal ? 0.005f : 0.1f;
+        const auto f = glint_bench::build(h, metal ? glint::lobe_kind::gaussian : glint::lobe_kind::beckmann, sigma_r, metal ? 0.3f : 30.0f);
+        glint::gaussian_params<float> g;
+        g.sigma_r = sigma_r;
+        const auto q = glint_bench::queries(glint::gaussian_pndf<float>::build(h.materialize(), g), 2048);
+        double least = 1e30;
+        for (int pass = 0; pass < std::atoi(argv[3]); ++pass) {
+            const auto start = std::chrono::steady_clock::now();
+            for (const auto& x : q) sum += static_cast<double>(lobe_forest_eval(f, x));
+            least = std::min(least, std::chrono::duration<double, std::nano>(std::chrono::steady_clock::now() - start).count() / static_cast<double>(q.size()));
+        }
+        std::printf("lobe-tree %s: %.0f ns a query (the least of %s passes of %zu)\n", argv[2], least, argv[3], q.size());
     } else {
-        std::fprintf(stderr, "usage: glint_frame_loop point|point-smooth|point-stochastic FRAMES | ibl|ibl-stochastic|ibl-lookup|ibl-radiance K FRAMES | draw N P | draw-time N P PAIRS | lights K MODE REPS\n");
+        std::fprintf(stderr, "usage: glint_frame_loop point|point-smooth|point-stochastic FRAMES | ibl|ibl-stochastic|ibl-lookup|ibl-radiance K FRAMES | draw N P | draw-time N P PAIRS | lights K MODE REPS | lobe-tree metal|pyramids PASSES\n");
         return 2;
     }
     std::printf("%s: sum %.9g\n", mode, sum);

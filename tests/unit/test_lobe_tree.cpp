@@ -194,6 +194,103 @@ TEST_CASE("lobe_tree: with delta_k = 0 the P-NDF is the materialised map's, over
     }
 }
 
+TEST_CASE("lobe_tree: in float (the walk's AVX2 leaf tests) with delta_k = 0 the P-NDF is the materialised map's") {
+    // The float forest's walk tests a leaf's entries eight at a time where the CPU has AVX2
+    // (detail::lobe_leaf_candidates); the double forest above does not. The same seeds and terms,
+    // summed in another order than gaussian_pndf's: within float's rounding of a sum (6.7e-7 at
+    // worst when written). With the sample set's u_offset passed to the walk as +shift instead of
+    // -shift, the worst difference was 1 (a footprint's terms all dropped).
+    const auto s = sample_map(glint::pattern::flakes, 64);
+    const auto h = quilt(s, 256, 32, 6);
+    glint::lobe_params<float> l;
+    l.sigma_r = 0.01f;
+    glint::cluster_params<float> c;
+    c.delta_k = 0;
+    const auto f = glint::lobe_forest<float>::build(h, l, c);
+    glint::gaussian_params<float> g;
+    g.sigma_r = 0.01f;
+    const auto d = glint::gaussian_pndf<float>::build(h.materialize(), g);
+    double worst = 0;
+    int compared = 0;
+    for (std::uint32_t i = 0; i < 40; ++i) {
+        const double sd = 2 * std::pow(16.0, unit(i, 4));  // 2 to 32 texels: the trees' path
+        const auto fp = glint_test::rotated_footprint(glm::vec2(static_cast<float>(256 * unit(i, 5)), static_cast<float>(256 * unit(i, 6))), static_cast<float>(sd),
+                                                      static_cast<float>(0.6 * sd), static_cast<float>(3 * unit(i, 7)));
+        const auto x = d.sample(fp, static_cast<float>(unit(i, 1)), static_cast<float>(unit(i, 2)), static_cast<float>(unit(i, 3)));
+        if (!x.valid) continue;
+        glint::lobe_query_options<float> trees;
+        trees.path = glint::lobe_path::trees;
+        const double a = f.eval(fp, x.s, trees), b = d.eval_hierarchy(fp, x.s);
+        if (!(b > 0)) continue;
+        ++compared;
+        worst = std::max(worst, std::fabs(a - b) / b);
+    }
+    MESSAGE("float: " << compared << " footprints, worst relative difference " << worst);
+    CHECK(compared >= 30);
+    CHECK(worst < 1e-4);
+}
+
+TEST_CASE("lobe_tree: a leaf's cheap tests in AVX2 keep exactly the entries that the scalar tests keep") {
+    // detail::lobe_leaf_candidates (AVX2 where the CPU has it) against _scalar, the tests the walk
+    // made entry by entry before: 200000 leaves of 1 to 8 entries, their s-box bounds and positions
+    // placed within a few ulps of the tests' boundaries (half of the decisions on each side), so
+    // that any other rounding (an fma, another order, >= for >) shows: a variant whose footprint
+    // offset takes one std::fma (below) disagreed on 589 leaves when written.
+    using k = glint::detail::glsl::kernels<float>;
+    const bool avx2 = k::glint_cpu_avx2();
+    MESSAGE(std::string(avx2 ? "AVX2 path" : "no AVX2 on this CPU: the dispatch is the scalar path itself"));
+    std::uint32_t differ = 0, spoilt_differ = 0, near_s = 0, near_u = 0, kept = 0, tested = 0;
+    for (std::uint32_t leaf = 0; leaf < 200000; ++leaf) {
+        const auto r = [&](std::uint32_t salt) { return static_cast<float>(unit(leaf, salt)); };
+        const float sd = 0.5f + 40 * r(1), t = 3.14159f * r(2), aspect = 0.3f + 0.7f * r(3);
+        const float ct = std::cos(t), st = std::sin(t), a2 = sd * sd, b2 = a2 * aspect * aspect;
+        const glm::vec4 cov(ct * ct * a2 + st * st * b2, ct * st * (a2 - b2), st * st * a2 + ct * ct * b2, a2 * b2);
+        const float cull_u = 2 + 6 * r(4), cull2 = cull_u * cull_u;
+        const auto f = k::glint_pndf_prepare(glm::vec2(2048 * r(5), 2048 * r(6)), cov, 0.5f, cull_u, 4.0f);
+        const glm::vec2 s(2 * r(7) - 1, 2 * r(8) - 1), u_offset(512 * r(9) - 256, 512 * r(10) - 256);
+        const unsigned count = 1 + (leaf & 7u);
+        float entries[8 * 12];
+        for (unsigned i = 0; i < count; ++i) {
+            float* x = entries + 12 * i;
+            const std::uint32_t e = 16 * i;
+            // A position whose radius is cull2 times a factor within a few ulps of 1 (or anywhere).
+            const float phi = 6.2831853f * r(20 + e), scale = r(21 + e) < 0.5f ? 1 + (r(22 + e) - 0.5f) * 8e-7f : 2 * r(22 + e);
+            const glm::vec2 eo(std::cos(phi) * std::sqrt(f.kappa.x * cull2) * scale, std::sin(phi) * std::sqrt(f.kappa.y * cull2) * scale);
+            const glm::vec2 u = f.mean - glm::vec2(f.axis.x * eo.x - f.axis.y * eo.y, f.axis.y * eo.x + f.axis.x * eo.y);
+            x[0] = u.x - u_offset.x, x[1] = u.y - u_offset.y;
+            x[2] = 2 * r(23 + e) - 1, x[3] = 2 * r(24 + e) - 1;  // the lobe's mean normal
+            for (int j = 4; j < 8; ++j) x[j] = r(25 + e + static_cast<std::uint32_t>(j));  // jac: not read
+            const float bt = 3.14159f * r(30 + e), bx = std::cos(bt), by = std::sin(bt);
+            const float dx = s.x - x[2], dy = s.y - x[3];
+            // Half-extents at the projections times a factor within a few ulps of 1 (or anywhere).
+            const bool edge = r(31 + e) < 0.5f;
+            const float fz = edge ? 1 + (r(32 + e) - 0.5f) * 8e-7f : 2 * r(32 + e), fw = edge ? 1 + (r(33 + e) - 0.5f) * 8e-7f : 2 * r(33 + e);
+            x[8] = bx, x[9] = by, x[10] = std::fabs(dx * bx + dy * by) * fz, x[11] = std::fabs(dy * bx - dx * by) * fw;
+            near_s += edge, near_u += scale > 0.99f && scale < 1.01f;
+        }
+        const unsigned want = glint::detail::lobe_leaf_candidates_scalar(entries, count, s, u_offset, f, cull2);
+        const unsigned got = glint::detail::lobe_leaf_candidates(entries, count, s, u_offset, f, cull2);
+        differ += want != got;
+        // The spoilt variant: the footprint offset's first component as one fma.
+        unsigned spoilt = 0;
+        for (unsigned i = 0; i < count; ++i) {
+            const float* x = entries + 12 * i;
+            const glm::vec2 u = glm::vec2(x[0], x[1]) + u_offset, dd = f.mean - u;
+            const glm::vec2 eo(std::fma(f.axis.x, dd.x, f.axis.y * dd.y), -f.axis.y * dd.x + f.axis.x * dd.y);
+            const bool out = glint::detail::lobe_outside_sbox(glm::vec4(x[8], x[9], x[10], x[11]), x[2], x[3], s) || k::glint_pndf_mahalanobis_u(eo, f) > cull2;
+            spoilt |= out ? 0u : 1u << i;
+        }
+        spoilt_differ += spoilt != got;
+        kept += static_cast<std::uint32_t>(__builtin_popcount(got)), tested += count;
+    }
+    MESSAGE(tested << " entries, " << kept << " kept, " << near_s << " near the s-box's edges, " << near_u << " near the ellipse; leaves that differ: "
+                   << differ << ", with the spoilt variant " << spoilt_differ);
+    CHECK(differ == 0);
+    CHECK(kept > tested / 20);
+    CHECK(kept < tested / 2);
+    CHECK(spoilt_differ > 100);
+}
+
 TEST_CASE("lobe_tree: the culled P-NDF stays within its stated L1 bound of the brute force") {
     // The culling of gaussian.hpp (tapered footprint window at 3.5 sd, lobes cut at 4 sd) moves
     // D_P by about 1% in L1 there; the forest counts the same seeds, so the same bound holds.

@@ -594,6 +594,7 @@ public:
         if (lp.kind == lobe_kind::beckmann) f.tan_cut_ = static_cast<real>(a * std::sqrt(-std::log(eps)));  // 1 - exp(-t^2 / a^2) = 1 - eps
         if (lp.kind == lobe_kind::ggx) f.tan_cut_ = static_cast<real>(a * std::sqrt((1 - eps) / eps));    // t^2 / (a^2 + t^2) = 1 - eps
         f.kept_ = static_cast<real>(1 - eps);
+        f.seed_shape_ = f.shape_of(lp.sigma_r);
         f.fit_sample_lobes();
         f.find_boundary();
         f.find_interiors();
@@ -629,9 +630,10 @@ public:
         lobe_query_stats st;
         const frame f = prepare(fp, st, k.cull_u, k.cull_s);
         real sum = 0;
+        const real sz = slope_z(s);
         for_each_seed(f, k, [&](long i, long j, const vec2& u) {
             const entry& e = seed(i, j);
-            sum += term(e.el, u, f, s, k);
+            sum += term(e.el, u, f, s, sz, k);
         });
         return sum;
     }
@@ -818,21 +820,37 @@ private:
 
     static vec3_t<real> axis_of(const vec2& n) { return vec3_t<real>(n.x, n.y, std::sqrt(std::max(real(0), real(1) - n.x * n.x - n.y * n.y))); }
 
-    // A product lobe's G_n(s) about normal n with roughness a (header comment), cut and renormalised.
-    real product_lobe(const vec2& s, const vec2& n, real a) const noexcept {
+    // The z of the unit half vector whose slope is s (0 where |s| >= 1): once a query, for
+    // product_lobe, rather than once a lobe (a square root whose latency every term waited for).
+    static real slope_z(const vec2& s) noexcept {
         const real sz2 = real(1) - s.x * s.x - s.y * s.y;
-        if (!(sz2 > real(0))) return real(0);
-        const real sz = std::sqrt(sz2);
+        return sz2 > real(0) ? std::sqrt(sz2) : real(0);
+    }
+
+    // A product lobe's roughness a as its G_n needs it: a^2, pi a^2 and the cut of tan^2 theta
+    // (tan_cut at sigma_r, scaled with a^2). Made once per forest for the seeds' lobes (a =
+    // sigma_r; seed_shape_), which saves each seed's term a division, and once per K-lobe term.
+    struct lobe_shape {
+        real a2, pi_a2, t2_cut;
+    };
+    lobe_shape shape_of(real a) const noexcept {
+        const real a2 = a * a;
+        return {a2, real(3.14159265358979323846) * a2, tan_cut_ * tan_cut_ * a2 / (lp_.sigma_r * lp_.sigma_r)};
+    }
+
+    // A product lobe's G_n(s) about normal n with roughness `shape` (header comment), cut and
+    // renormalised; sz = slope_z(s).
+    real product_lobe(const vec2& s, real sz, const vec2& n, const lobe_shape& shape) const noexcept {
+        if (!(sz > real(0))) return real(0);
         const vec3_t<real> m = axis_of(n);
         const real c = s.x * m.x + s.y * m.y + sz * m.z;
         if (!(c > real(0))) return real(0);
-        const real c2 = c * c, t2 = std::max(real(0), real(1) - c2) / c2, a2 = a * a;
+        const real c2 = c * c, t2 = std::max(real(0), real(1) - c2) / c2, a2 = shape.a2;
+        if (t2 > shape.t2_cut) return real(0);
         real d;
         if (lp_.kind == lobe_kind::beckmann) {
-            if (t2 > tan_cut_ * tan_cut_ * a2 / (lp_.sigma_r * lp_.sigma_r)) return real(0);
-            d = std::exp(-t2 / a2) / (real(3.14159265358979323846) * a2 * c2 * c2);
+            d = std::exp(-t2 / a2) / (shape.pi_a2 * c2 * c2);
         } else {
-            if (t2 > tan_cut_ * tan_cut_ * a2 / (lp_.sigma_r * lp_.sigma_r)) return real(0);
             const real q = a2 + t2;
             d = a2 / (real(3.14159265358979323846) * c2 * c2 * q * q);
         }
@@ -840,10 +858,10 @@ private:
     }
 
     // Seed term: the Gaussian element (kernels/gaussian.glsl) or a product lobe's w_i G_n(s).
-    real term(const element& el, const vec2& u, const frame& f, const vec2& s, const params& k) const noexcept {
+    real term(const element& el, const vec2& u, const frame& f, const vec2& s, real sz, const params& k) const noexcept {
         if (lp_.kind == lobe_kind::gaussian) return kernels::glint_pndf_element(el, u, f, s, k);
         const real w = kernels::glint_pndf_element_weight(u, f, k);
-        return w > real(0) ? w * product_lobe(s, vec2(el.us.z, el.us.w), lp_.sigma_r) : real(0);
+        return w > real(0) ? w * product_lobe(s, sz, vec2(el.us.z, el.us.w), seed_shape_) : real(0);
     }
 
     frame prepare(const texel_footprint<real>& fp, lobe_query_stats& st, real cull_u, real cull_s) const noexcept {
@@ -1501,37 +1519,51 @@ private:
         }
     }
 
-    // A K-lobe's footprint term (header comment); *window_cut is set where the footprint's taper
-    // at the centroid (not the normal lobe) made it 0.
-    real klobe_term(const klobe& k, const vec2& u_mean, const frame& f, const vec2& s, bool* window_cut = nullptr) const noexcept {
-        // The normal part first (cheap rejection).
-        const vec2 d = s - k.n_mean;
-        real g;
-        if (lp_.kind == lobe_kind::gaussian) {
-            const real q = k.n_inv.x * d.x * d.x + real(2) * k.n_inv.y * d.x * d.y + k.n_inv.z * d.y * d.y;
-            if (q > k_.cull_s * k_.cull_s) return real(0);
-            g = std::exp(real(-0.5) * q) * f.lobe_norm * k.n_cov.w;
-        } else {
-            g = product_lobe(s, k.n_mean, k.n_cov.w);
-            if (!(g > real(0))) return real(0);
+    // A K-lobe's footprint term (header comment) has three parts, each of which can make it 0: the
+    // normal lobe at s, the position Gaussian of Sigma_P plus the K-lobe's position covariance, and
+    // the members' taper at the centroid u_mean (in the footprint's own metric, as the seeds').
+    // The normal part: G_nj(s) (times the lobe's weight terms); `misses` where the lobe misses s
+    // (a Gaussian lobe past its culling radius, a product lobe 0).
+    real klobe_normal(const klobe& k, const frame& f, const vec2& s, real sz, bool& misses) const noexcept {
+        if (lp_.kind != lobe_kind::gaussian) {
+            const real g = product_lobe(s, sz, k.n_mean, shape_of(k.n_cov.w));
+            misses = !(g > real(0));
+            return g;
         }
-        // Sigma_P = R diag(lambda) R^T, plus the K-lobe's position covariance.
+        const vec2 d = s - k.n_mean;
+        const real q = k.n_inv.x * d.x * d.x + real(2) * k.n_inv.y * d.x * d.y + k.n_inv.z * d.y * d.y;
+        misses = q > k_.cull_s * k_.cull_s;
+        return misses ? real(0) : std::exp(real(-0.5) * q) * f.lobe_norm * k.n_cov.w;
+    }
+    // Sigma_P = R diag(lambda) R^T plus the K-lobe's position covariance: (xx, xy, yy, det).
+    static vec4 klobe_covariance(const klobe& k, const frame& f) noexcept {
         const real c = f.axis.x, sn = f.axis.y;
         const real pxx = c * c * f.lambda.x + sn * sn * f.lambda.y, pxy = c * sn * (f.lambda.x - f.lambda.y), pyy = sn * sn * f.lambda.x + c * c * f.lambda.y;
         const real mxx = pxx + k.u_cov.x, mxy = pxy + k.u_cov.y, myy = pyy + k.u_cov.z;
-        const real det = mxx * myy - mxy * mxy;
-        if (!(det > real(0))) return real(0);
+        return vec4(mxx, mxy, myy, mxx * myy - mxy * mxy);
+    }
+    // The taper at the centroid.
+    real klobe_window(const vec2& u_mean, const frame& f) const noexcept {
+        return kernels::glint_pndf_window(kernels::glint_pndf_mahalanobis_u(kernels::glint_pndf_offset(u_mean, f), f), k_.cull_u);
+    }
+    // Whether the taper cuts a K-lobe that would otherwise count (its normal lobe reaches s and its
+    // covariance is positive definite): then its node cannot stand in. `win` is klobe_window's.
+    bool klobe_cut(const klobe& k, real win, const frame& f, const vec2& s, real sz) const noexcept {
+        if (win > real(0)) return false;
+        bool misses = false;
+        klobe_normal(k, f, s, sz, misses);
+        return !misses && klobe_covariance(k, f).w > real(0);
+    }
+    // The term, with the window klobe_window gave.
+    real klobe_term(const klobe& k, const vec2& u_mean, real win, const frame& f, const vec2& s, real sz) const noexcept {
+        bool misses = false;
+        const real g = klobe_normal(k, f, s, sz, misses);
+        if (misses) return real(0);
+        const vec4 m = klobe_covariance(k, f);
+        if (!(m.w > real(0)) || !(win > real(0))) return real(0);
         const vec2 e = f.mean - u_mean;
-        const real q = (myy * e.x * e.x - real(2) * mxy * e.x * e.y + mxx * e.y * e.y) / det;
-        // The members' taper at the centroid (in the footprint's own metric, as the seeds').
-        const vec2 eo = kernels::glint_pndf_offset(u_mean, f);
-        const real m = kernels::glint_pndf_mahalanobis_u(eo, f);
-        const real win = kernels::glint_pndf_window(m, k_.cull_u);
-        if (!(win > real(0))) {
-            if (window_cut) *window_cut = true;
-            return real(0);
-        }
-        const real w = k.weight * f.norm * std::sqrt(f.kappa.x * f.kappa.y / det) * std::exp(real(-0.5) * q) * win;
+        const real q = (m.z * e.x * e.x - real(2) * m.y * e.x * e.y + m.x * e.y * e.y) / m.w;
+        const real w = k.weight * f.norm * std::sqrt(f.kappa.x * f.kappa.y / m.w) * std::exp(real(-0.5) * q) * win;
         return w * g;
     }
 
@@ -1606,6 +1638,7 @@ private:
 
     // The sample set's part of D_P: per block (and periodic image) the footprint box moved into I.
     real sum_sample(const frame& f, const vec2& s, const lobe_query_options<real>& o, lobe_query_stats& st) const noexcept {
+        const real sz = slope_z(s);
         const quilted_map& m = map_;
         const real W = static_cast<real>(m.width()), H = static_cast<real>(m.height());
         const real x0 = f.mean.x - f.extent.x, x1 = f.mean.x + f.extent.x, y0 = f.mean.y - f.extent.y, y1 = f.mean.y + f.extent.y;
@@ -1661,7 +1694,7 @@ private:
                         if (boundary_bit(idx)) return;
                     }
                     ++st.lobes;
-                    sum += term(e.el, u, f, s, k_);
+                    sum += term(e.el, u, f, s, sz, k_);
                 };
                 const auto inner = [&](const node& nd) {
                     if (!o.use_klobes) return false;
@@ -1670,18 +1703,21 @@ private:
                     const int tx0 = static_cast<int>(std::floor(nd.x0 + 2e-3f - static_cast<float>(src.x))), tx1 = static_cast<int>(std::floor(nd.x1 - 2e-3f - static_cast<float>(src.x)));
                     const int ty0 = static_cast<int>(std::floor(nd.y0 + 2e-3f - static_cast<float>(src.y))), ty1 = static_cast<int>(std::floor(nd.y1 - 2e-3f - static_cast<float>(src.y)));
                     if (!in_runs(blk, tx0, tx1, ty0, ty1)) return false;
-                    // The K-lobes stand in unless the footprint's taper cut one at its centroid
+                    // The K-lobes stand in unless the footprint's taper cuts one at its centroid
                     // (the node straddles the footprint's edge: its members are taken one by one).
-                    real v[8];
-                    bool window_cut = false;
+                    // The tapers first: most nodes that get here are cut (64% of them on the
+                    // report's pyramids), and then no term is needed.
+                    real win[8];
                     for (std::uint32_t q = 0; q < nd.kcount; ++q) {
                         const klobe& k = klobes_[nd.kfirst + q];
-                        v[q] = klobe_term(k, k.u_mean - shift, f, s, &window_cut);
+                        win[q] = klobe_window(k.u_mean - shift, f);
+                        if (klobe_cut(k, win[q], f, s, sz)) return false;
                     }
-                    if (window_cut) return false;
                     for (std::uint32_t q = 0; q < nd.kcount; ++q) {
-                        sum += v[q];
-                        st.klobes += v[q] > real(0) ? 1u : 0u;  // as lobes count: those past the cheap rejections
+                        const klobe& k = klobes_[nd.kfirst + q];
+                        const real v = klobe_term(k, k.u_mean - shift, win[q], f, s, sz);
+                        sum += v;
+                        st.klobes += v > real(0) ? 1u : 0u;  // as lobes count: those past the cheap rejections
                     }
                     return true;
                 };
@@ -1712,6 +1748,7 @@ private:
     // D_P(s) by the footprint box's lattice: each row cut at the blocks' nominal columns; seeds of a
     // block's core read the sample's lobes directly, the others through seed() (owner, boundary).
     real sum_lattice(const frame& f, const vec2& s, lobe_query_stats& st) const noexcept {
+        const real sz = slope_z(s);
         const quilted_map& m = map_;
         const auto rx = kernels::glint_pndf_axis_range(f.mean.x, f.extent.x, k_.spacing, k_.max_side);
         const auto ry = kernels::glint_pndf_axis_range(f.mean.y, f.extent.y, k_.spacing, k_.max_side);
@@ -1720,7 +1757,7 @@ private:
         const auto add = [&](const entry& x, const vec2& u) GLINT_FLATTEN {
             if (outside_sbox(x.bound, x.el, s) || outside_footprint(u, f)) return;
             ++st.lobes;
-            sum += term(x.el, u, f, s, k_);
+            sum += term(x.el, u, f, s, sz, k_);
         };
         for (long j = ry.x; j <= ry.y; ++j) {
             const long jj = wrap(j, lh), by = std::min<long>(jj / st_lat, m.blocks_y() - 1), ly = jj - by * st_lat;
@@ -1748,6 +1785,7 @@ private:
 
     // The boundary set's part: walked in H over the box's periodic images.
     real sum_boundary(const frame& f, const vec2& s, lobe_query_stats& st) const noexcept {
+        const real sz = slope_z(s);
         if (boundary_lobes_.empty()) return real(0);
         const real W = static_cast<real>(map_.width()), H = static_cast<real>(map_.height());
         const real x0 = f.mean.x - f.extent.x, x1 = f.mean.x + f.extent.x, y0 = f.mean.y - f.extent.y, y1 = f.mean.y + f.extent.y;
@@ -1761,7 +1799,7 @@ private:
                 const glm::vec2 b1(static_cast<float>(x1 - offset.x), static_cast<float>(y1 - offset.y));
                 const auto leaf = [&](const entry& e) GLINT_FLATTEN {  // past the s-box and the culling ellipse (walk)
                     ++st.lobes;
-                    sum += term(e.el, vec2(e.el.us.x, e.el.us.y) + offset, f, s, k_);
+                    sum += term(e.el, vec2(e.el.us.x, e.el.us.y) + offset, f, s, sz, k_);
                 };
                 const auto inner = [](const node&) { return false; };
                 const ellipse el = culling_ellipse(f, f.mean - offset);
@@ -1775,6 +1813,7 @@ private:
     lobe_params<real> lp_{};
     params k_{};
     real tau_ = 0, tan_cut_ = 0, kept_ = 1, alpha_g_ = real(0.1);
+    lobe_shape seed_shape_{};  // shape_of(sigma_r)
     int ept_ = 1;
     long sample_w_ = 0;
     std::vector<entry> sample_lobes_, boundary_lobes_;

@@ -462,16 +462,20 @@ bool lobe_outside_footprint(const vec2_t<real>& u, const typename glsl::kernels<
     return k::glint_pndf_mahalanobis_u(k::glint_pndf_offset(u, f), f) > cull2;
 }
 
-// Bit i set where entry i of a leaf's `count` (at most 8) passes both tests.
+// Bit i set where entry i of a leaf's `count` (at most 8) passes both tests; then m[i] is its
+// squared Mahalanobis radius, for its term (glint_pndf_weight_at).
 template <class real>
 unsigned lobe_leaf_candidates_scalar(const real* entries, unsigned count, const vec2_t<real>& s, const vec2_t<real>& u_offset,
-                                     const typename glsl::kernels<real>::glint_pndf_frame& f, real cull2) {
+                                     const typename glsl::kernels<real>::glint_pndf_frame& f, real cull2, real m[8]) {
+    using k = glsl::kernels<real>;
     unsigned keep = 0;
     for (unsigned i = 0; i < count; ++i) {
         const real* x = entries + 12 * i;
         const glm::vec<4, real, glm::defaultp> bound(x[8], x[9], x[10], x[11]);
         if (lobe_outside_sbox(bound, x[2], x[3], s)) continue;
-        if (lobe_outside_footprint(vec2_t<real>(x[0], x[1]) + u_offset, f, cull2)) continue;
+        const real mi = k::glint_pndf_mahalanobis_u(k::glint_pndf_offset(vec2_t<real>(x[0], x[1]) + u_offset, f), f);  // lobe_outside_footprint's
+        if (mi > cull2) continue;
+        m[i] = mi;
         keep |= 1u << i;
     }
     return keep;
@@ -485,7 +489,8 @@ unsigned lobe_leaf_candidates_scalar(const real* entries, unsigned count, const 
 // a query takes 11% fewer instructions (glint_frame_loop lobe-tree metal 1 under callgrind: 429M
 // to 381M a pass; pyramids 211M to 186M; the same sums; README, "Lobe trees").
 __attribute__((noinline, target("avx2"))) inline unsigned lobe_leaf_candidates_x8(const float* entries, unsigned count, float sx, float sy, float ox,
-                                                                                  float oy, const glsl::kernels<float>::glint_pndf_frame& f, float cull2) {
+                                                                                  float oy, const glsl::kernels<float>::glint_pndf_frame& f, float cull2,
+                                                                                  float m_out[8]) {
     typedef float f32x4 __attribute__((vector_size(16)));
     typedef float f32x8 __attribute__((vector_size(32)));
     typedef int i32x8 __attribute__((vector_size(32)));
@@ -523,6 +528,7 @@ __attribute__((noinline, target("avx2"))) inline unsigned lobe_leaf_candidates_x
     const f32x8 m = ex * ex / f.kappa.x + ey * ey / f.kappa.y;
     const i32x8 lane = {0, 1, 2, 3, 4, 5, 6, 7};
     const i32x8 keep = ~(out_s | (m > cull2)) & (lane < static_cast<int>(count));
+    std::memcpy(m_out, &m, sizeof(m));
     return static_cast<unsigned>(__builtin_ia32_movmskps256(reinterpret_cast<f32x8>(keep)));
 }
 #endif
@@ -530,12 +536,12 @@ __attribute__((noinline, target("avx2"))) inline unsigned lobe_leaf_candidates_x
 // lobe_leaf_candidates_scalar, in AVX2 where the CPU has it (float).
 template <class real>
 unsigned lobe_leaf_candidates(const real* entries, unsigned count, const vec2_t<real>& s, const vec2_t<real>& u_offset,
-                              const typename glsl::kernels<real>::glint_pndf_frame& f, real cull2) {
+                              const typename glsl::kernels<real>::glint_pndf_frame& f, real cull2, real m[8]) {
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(GLINT_NO_AVX2)
     if constexpr (std::is_same<real, float>::value)
-        if (glsl::kernels<float>::glint_cpu_avx2()) return lobe_leaf_candidates_x8(entries, count, s.x, s.y, u_offset.x, u_offset.y, f, cull2);
+        if (glsl::kernels<float>::glint_cpu_avx2()) return lobe_leaf_candidates_x8(entries, count, s.x, s.y, u_offset.x, u_offset.y, f, cull2, m);
 #endif
-    return lobe_leaf_candidates_scalar(entries, count, s, u_offset, f, cull2);
+    return lobe_leaf_candidates_scalar(entries, count, s, u_offset, f, cull2, m);
 }
 
 }  // namespace detail
@@ -860,7 +866,15 @@ private:
     // Seed term: the Gaussian element (kernels/gaussian.glsl) or a product lobe's w_i G_n(s).
     real term(const element& el, const vec2& u, const frame& f, const vec2& s, real sz, const params& k) const noexcept {
         if (lp_.kind == lobe_kind::gaussian) return kernels::glint_pndf_element(el, u, f, s, k);
-        const real w = kernels::glint_pndf_element_weight(u, f, k);
+        return product_term(el, kernels::glint_pndf_element_weight(u, f, k), s, sz);
+    }
+    // The same where u's squared Mahalanobis radius m is known (the walk's leaf tests computed it,
+    // with the same operations): product lobes' weights from it, without its two divisions again.
+    real term(const element& el, const vec2& u, real m, const frame& f, const vec2& s, real sz, const params& k) const noexcept {
+        if (lp_.kind == lobe_kind::gaussian) return kernels::glint_pndf_element(el, u, f, s, k);
+        return product_term(el, kernels::glint_pndf_weight_at(m, f, k), s, sz);
+    }
+    real product_term(const element& el, real w, const vec2& s, real sz) const noexcept {
         return w > real(0) ? w * product_lobe(s, sz, vec2(el.us.z, el.us.w), seed_shape_) : real(0);
     }
 
@@ -1623,9 +1637,12 @@ private:
             if (std::fabs(e.axis.x * dy - e.axis.y * dx) - (hx * ay + hy * ax) > e.radius.y) continue;
             if (n >= p2) {
                 const std::uint32_t first = begin + leaf_size * (n - p2), last = std::min(end, first + leaf_size);
-                for (unsigned keep = detail::lobe_leaf_candidates(reinterpret_cast<const real*>(t.listed.data() + first), last - first, s, u_offset, f, cull2); keep != 0;
-                     keep &= keep - 1)
-                    leaf(t.listed[first + static_cast<std::uint32_t>(__builtin_ctz(keep))]);
+                real m[8];
+                for (unsigned keep = detail::lobe_leaf_candidates(reinterpret_cast<const real*>(t.listed.data() + first), last - first, s, u_offset, f, cull2, m);
+                     keep != 0; keep &= keep - 1) {
+                    const unsigned i = static_cast<unsigned>(__builtin_ctz(keep));
+                    leaf(t.listed[first + i], m[i]);
+                }
             } else {
                 if (b.kcount > 0 && inner(b)) continue;
                 // The left child on top, so that leaves come in memory order (as gaussian_pndf's
@@ -1679,7 +1696,7 @@ private:
                 const real cx0 = real(src.x + o_core) + real(1.5), cy0 = real(src.y + o_core) + real(1.5);
                 const real cx1 = real(src.x + m.stride_x(xs[b].b)) - real(1.5), cy1 = real(src.y + m.stride_y(ys[a].b)) - real(1.5);
                 const glm::ivec2 origin_i = m.origin(blk) * ept_;  // B's corner on H's lattice
-                const auto leaf = [&](const entry& e) GLINT_FLATTEN {  // past the s-box and the culling ellipse (walk)
+                const auto leaf = [&](const entry& e, real m_u) GLINT_FLATTEN {  // past the s-box and the culling ellipse (walk)
                     const vec2 p(e.el.us.x, e.el.us.y);
                     const vec2 u = p - shift;
                     if (!(p.x >= cx0 && p.x < cx1 && p.y >= cy0 && p.y < cy1)) {
@@ -1694,7 +1711,7 @@ private:
                         if (boundary_bit(idx)) return;
                     }
                     ++st.lobes;
-                    sum += term(e.el, u, f, s, sz, k_);
+                    sum += term(e.el, u, m_u, f, s, sz, k_);
                 };
                 const auto inner = [&](const node& nd) {
                     if (!o.use_klobes) return false;
@@ -1797,9 +1814,9 @@ private:
                 const vec2 offset(real(ix) * W, real(iy) * H);
                 const glm::vec2 b0(static_cast<float>(x0 - offset.x), static_cast<float>(y0 - offset.y));
                 const glm::vec2 b1(static_cast<float>(x1 - offset.x), static_cast<float>(y1 - offset.y));
-                const auto leaf = [&](const entry& e) GLINT_FLATTEN {  // past the s-box and the culling ellipse (walk)
+                const auto leaf = [&](const entry& e, real m_u) GLINT_FLATTEN {  // past the s-box and the culling ellipse (walk)
                     ++st.lobes;
-                    sum += term(e.el, vec2(e.el.us.x, e.el.us.y) + offset, f, s, sz, k_);
+                    sum += term(e.el, vec2(e.el.us.x, e.el.us.y) + offset, m_u, f, s, sz, k_);
                 };
                 const auto inner = [](const node&) { return false; };
                 const ellipse el = culling_ellipse(f, f.mean - offset);

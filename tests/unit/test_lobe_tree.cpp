@@ -11,6 +11,7 @@
 #include <atomic>
 #include <cmath>
 #include <cstdlib>
+#include <cstring>
 #include <new>
 #include <string>
 #include <vector>
@@ -230,7 +231,7 @@ TEST_CASE("lobe_tree: in float (the walk's AVX2 leaf tests) with delta_k = 0 the
     CHECK(worst < 1e-4);
 }
 
-TEST_CASE("lobe_tree: a leaf's cheap tests in AVX2 keep exactly the entries that the scalar tests keep") {
+TEST_CASE("lobe_tree: a leaf's cheap tests in AVX2 keep exactly the entries that the scalar tests keep, with the same radii") {
     // detail::lobe_leaf_candidates (AVX2 where the CPU has it) against _scalar, the tests the walk
     // made entry by entry before: 200000 leaves of 1 to 8 entries, their s-box bounds and positions
     // placed within a few ulps of the tests' boundaries (half of the decisions on each side), so
@@ -239,7 +240,7 @@ TEST_CASE("lobe_tree: a leaf's cheap tests in AVX2 keep exactly the entries that
     using k = glint::detail::glsl::kernels<float>;
     const bool avx2 = k::glint_cpu_avx2();
     MESSAGE(std::string(avx2 ? "AVX2 path" : "no AVX2 on this CPU: the dispatch is the scalar path itself"));
-    std::uint32_t differ = 0, spoilt_differ = 0, near_s = 0, near_u = 0, kept = 0, tested = 0;
+    std::uint32_t differ = 0, radii_differ = 0, spoilt_differ = 0, spoilt_radii_differ = 0, near_s = 0, near_u = 0, kept = 0, tested = 0;
     for (std::uint32_t leaf = 0; leaf < 200000; ++leaf) {
         const auto r = [&](std::uint32_t salt) { return static_cast<float>(unit(leaf, salt)); };
         const float sd = 0.5f + 40 * r(1), t = 3.14159f * r(2), aspect = 0.3f + 0.7f * r(3);
@@ -268,27 +269,37 @@ TEST_CASE("lobe_tree: a leaf's cheap tests in AVX2 keep exactly the entries that
             x[8] = bx, x[9] = by, x[10] = std::fabs(dx * bx + dy * by) * fz, x[11] = std::fabs(dy * bx - dx * by) * fw;
             near_s += edge, near_u += scale > 0.99f && scale < 1.01f;
         }
-        const unsigned want = glint::detail::lobe_leaf_candidates_scalar(entries, count, s, u_offset, f, cull2);
-        const unsigned got = glint::detail::lobe_leaf_candidates(entries, count, s, u_offset, f, cull2);
+        float m_want[8], m_got[8];
+        const unsigned want = glint::detail::lobe_leaf_candidates_scalar(entries, count, s, u_offset, f, cull2, m_want);
+        const unsigned got = glint::detail::lobe_leaf_candidates(entries, count, s, u_offset, f, cull2, m_got);
         differ += want != got;
+        // The kept entries' Mahalanobis radii, which their terms use, bit for bit.
+        for (unsigned keep = want & got; keep != 0; keep &= keep - 1) {
+            const unsigned i = static_cast<unsigned>(__builtin_ctz(keep));
+            radii_differ += std::memcmp(&m_want[i], &m_got[i], sizeof(float)) != 0;
+        }
         // The spoilt variant: the footprint offset's first component as one fma.
         unsigned spoilt = 0;
         for (unsigned i = 0; i < count; ++i) {
             const float* x = entries + 12 * i;
             const glm::vec2 u = glm::vec2(x[0], x[1]) + u_offset, dd = f.mean - u;
             const glm::vec2 eo(std::fma(f.axis.x, dd.x, f.axis.y * dd.y), -f.axis.y * dd.x + f.axis.x * dd.y);
-            const bool out = glint::detail::lobe_outside_sbox(glm::vec4(x[8], x[9], x[10], x[11]), x[2], x[3], s) || k::glint_pndf_mahalanobis_u(eo, f) > cull2;
+            const float m_spoilt = k::glint_pndf_mahalanobis_u(eo, f);
+            const bool out = glint::detail::lobe_outside_sbox(glm::vec4(x[8], x[9], x[10], x[11]), x[2], x[3], s) || m_spoilt > cull2;
             spoilt |= out ? 0u : 1u << i;
+            if (!out && ((got >> i) & 1u)) spoilt_radii_differ += std::memcmp(&m_spoilt, &m_got[i], sizeof(float)) != 0;
         }
         spoilt_differ += spoilt != got;
         kept += static_cast<std::uint32_t>(__builtin_popcount(got)), tested += count;
     }
     MESSAGE(tested << " entries, " << kept << " kept, " << near_s << " near the s-box's edges, " << near_u << " near the ellipse; leaves that differ: "
-                   << differ << ", with the spoilt variant " << spoilt_differ);
+                   << differ << ", with the spoilt variant " << spoilt_differ << "; kept entries' radii that differ: " << radii_differ << ", with the spoilt variant " << spoilt_radii_differ);
     CHECK(differ == 0);
+    CHECK(radii_differ == 0);
     CHECK(kept > tested / 20);
     CHECK(kept < tested / 2);
     CHECK(spoilt_differ > 100);
+    CHECK(spoilt_radii_differ > 1000);
 }
 
 TEST_CASE("lobe_tree: the culled P-NDF stays within its stated L1 bound of the brute force") {

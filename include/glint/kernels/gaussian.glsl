@@ -163,12 +163,16 @@ GLINT_FN real glint_pndf_mahalanobis_u(vec2 e, glint_pndf_frame f) {
     return e.x * e.x / f.kappa.x + e.y * e.y / f.kappa.y;
 }
 
-// The tapered spatial weight w_i of an element at u_i (0 outside the culling ellipse).
-GLINT_FN real glint_pndf_element_weight(vec2 u_i, glint_pndf_frame f, glint_pndf_params p) {
-    vec2 e = glint_pndf_offset(u_i, f);
-    real m = glint_pndf_mahalanobis_u(e, f);
+// The tapered spatial weight w_i of an element whose footprint offset has squared Mahalanobis
+// radius m (0 outside the culling ellipse).
+GLINT_FN real glint_pndf_weight_at(real m, glint_pndf_frame f, glint_pndf_params p) {
     if (p.cull_u > real(0) && m > p.cull_u * p.cull_u) return real(0);
     return p.area * f.norm * exp(real(-0.5) * m) * glint_pndf_window(m, p.cull_u);
+}
+
+// The same for an element at u_i.
+GLINT_FN real glint_pndf_element_weight(vec2 u_i, glint_pndf_frame f, glint_pndf_params p) {
+    return glint_pndf_weight_at(glint_pndf_mahalanobis_u(glint_pndf_offset(u_i, f), f), f, p);
 }
 
 // The lobe's shape at footprint offset e: its mean and C's factors (mahalanobis_u and weight left 0).

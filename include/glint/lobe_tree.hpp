@@ -869,9 +869,9 @@ private:
         return product_term(el, kernels::glint_pndf_element_weight(u, f, k), s, sz);
     }
     // The same where u's squared Mahalanobis radius m is known (the walk's leaf tests computed it,
-    // with the same operations): product lobes' weights from it, without its two divisions again.
+    // with the same operations), without its two divisions again.
     real term(const element& el, const vec2& u, real m, const frame& f, const vec2& s, real sz, const params& k) const noexcept {
-        if (lp_.kind == lobe_kind::gaussian) return kernels::glint_pndf_element(el, u, f, s, k);
+        if (lp_.kind == lobe_kind::gaussian) return kernels::glint_pndf_element_at(el, kernels::glint_pndf_offset(u, f), m, f, s, k);
         return product_term(el, kernels::glint_pndf_weight_at(m, f, k), s, sz);
     }
     real product_term(const element& el, real w, const vec2& s, real sz) const noexcept {
@@ -1544,10 +1544,14 @@ private:
             misses = !(g > real(0));
             return g;
         }
-        const vec2 d = s - k.n_mean;
-        const real q = k.n_inv.x * d.x * d.x + real(2) * k.n_inv.y * d.x * d.y + k.n_inv.z * d.y * d.y;
+        const real q = klobe_gaussian_q(k, s);
         misses = q > k_.cull_s * k_.cull_s;
         return misses ? real(0) : std::exp(real(-0.5) * q) * f.lobe_norm * k.n_cov.w;
+    }
+    // A Gaussian normal lobe's squared Mahalanobis distance to s.
+    static real klobe_gaussian_q(const klobe& k, const vec2& s) noexcept {
+        const vec2 d = s - k.n_mean;
+        return k.n_inv.x * d.x * d.x + real(2) * k.n_inv.y * d.x * d.y + k.n_inv.z * d.y * d.y;
     }
     // Sigma_P = R diag(lambda) R^T plus the K-lobe's position covariance: (xx, xy, yy, det).
     static vec4 klobe_covariance(const klobe& k, const frame& f) noexcept {
@@ -1560,15 +1564,26 @@ private:
     real klobe_window(const vec2& u_mean, const frame& f) const noexcept {
         return kernels::glint_pndf_window(kernels::glint_pndf_mahalanobis_u(kernels::glint_pndf_offset(u_mean, f), f), k_.cull_u);
     }
-    // Whether the taper cuts a K-lobe that would otherwise count (its normal lobe reaches s and its
-    // covariance is positive definite): then its node cannot stand in. `win` is klobe_window's.
-    bool klobe_cut(const klobe& k, real win, const frame& f, const vec2& s, real sz) const noexcept {
+    // Whether the taper cuts a K-lobe at u_mean that would otherwise count (its normal lobe reaches
+    // s and its covariance is positive definite): then its node cannot stand in. Sets `win` to
+    // klobe_window's where the term can need it (0 where the lobe misses s). The cheaper test
+    // first: a Gaussian lobe's cull (most of a Gaussian forest's K-lobes miss s), a product lobe's
+    // taper (the lobe costs a square root, divisions and an exp; 64% of the pyramids' nodes that
+    // reach their K-lobes are cut).
+    bool klobe_cut(const klobe& k, const vec2& u_mean, const frame& f, const vec2& s, real sz, real& win) const noexcept {
+        if (lp_.kind == lobe_kind::gaussian) {
+            win = real(0);
+            if (klobe_gaussian_q(k, s) > k_.cull_s * k_.cull_s) return false;
+            win = klobe_window(u_mean, f);
+            return !(win > real(0)) && klobe_covariance(k, f).w > real(0);
+        }
+        win = klobe_window(u_mean, f);
         if (win > real(0)) return false;
         bool misses = false;
         klobe_normal(k, f, s, sz, misses);
         return !misses && klobe_covariance(k, f).w > real(0);
     }
-    // The term, with the window klobe_window gave.
+    // The term, with the window klobe_cut gave.
     real klobe_term(const klobe& k, const vec2& u_mean, real win, const frame& f, const vec2& s, real sz) const noexcept {
         bool misses = false;
         const real g = klobe_normal(k, f, s, sz, misses);
@@ -1722,13 +1737,11 @@ private:
                     if (!in_runs(blk, tx0, tx1, ty0, ty1)) return false;
                     // The K-lobes stand in unless the footprint's taper cuts one at its centroid
                     // (the node straddles the footprint's edge: its members are taken one by one).
-                    // The tapers first: most nodes that get here are cut (64% of them on the
-                    // report's pyramids), and then no term is needed.
+                    // Every K-lobe's cut first: then no term is needed.
                     real win[8];
                     for (std::uint32_t q = 0; q < nd.kcount; ++q) {
                         const klobe& k = klobes_[nd.kfirst + q];
-                        win[q] = klobe_window(k.u_mean - shift, f);
-                        if (klobe_cut(k, win[q], f, s, sz)) return false;
+                        if (klobe_cut(k, k.u_mean - shift, f, s, sz, win[q])) return false;
                     }
                     for (std::uint32_t q = 0; q < nd.kcount; ++q) {
                         const klobe& k = klobes_[nd.kfirst + q];

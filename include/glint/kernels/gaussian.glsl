@@ -219,14 +219,20 @@ GLINT_FN real glint_pndf_lobe_q(glint_pndf_lobe l, vec2 s, real sigma_r) {
 // Both culling tests come before any exp, and one exp gives the weight's and the lobe's factors
 // (exp(-m/2) exp(-q/2)): most elements that reach it are culled (on the flakes map of
 // docs/microstructure.md at footprint sd 64 through the hierarchy, 2.6 reach it per nonzero term).
-GLINT_FN real glint_pndf_element(glint_gaussian_element el, vec2 u_i, glint_pndf_frame f, vec2 s, glint_pndf_params p) {
-    vec2 e = glint_pndf_offset(u_i, f);
-    real m = glint_pndf_mahalanobis_u(e, f);
+// From the element's footprint offset e (glint_pndf_offset) and its squared Mahalanobis radius m
+// (glint_pndf_mahalanobis_u of e), for callers that have m already.
+GLINT_FN real glint_pndf_element_at(glint_gaussian_element el, vec2 e, real m, glint_pndf_frame f, vec2 s, glint_pndf_params p) {
     if (p.cull_u > real(0) && m > p.cull_u * p.cull_u) return real(0);
     glint_pndf_lobe l = glint_pndf_lobe_shape(el, e, f, p);
     real q = glint_pndf_lobe_q(l, s, p.sigma_r);
     if (p.cull_s > real(0) && q > p.cull_s * p.cull_s) return real(0);
     return p.area * f.norm * glint_pndf_window(m, p.cull_u) * exp(real(-0.5) * (m + q)) * f.lobe_norm / sqrt(l.det_c);
+}
+
+// The same for an element at u_i.
+GLINT_FN real glint_pndf_element(glint_gaussian_element el, vec2 u_i, glint_pndf_frame f, vec2 s, glint_pndf_params p) {
+    vec2 e = glint_pndf_offset(u_i, f);
+    return glint_pndf_element_at(el, e, glint_pndf_mahalanobis_u(e, f), f, s, p);
 }
 
 // The element's normal marginal a_i N(s; s_i, sigma_r^2 I + sigma_h^2 J J^T) (the footprint -> infinity

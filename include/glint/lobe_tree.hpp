@@ -484,7 +484,8 @@ unsigned lobe_leaf_candidates_scalar(const real* entries, unsigned count, const 
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(GLINT_NO_AVX2)
 // The same in AVX2 registers, a leaf's eight entries a lane each (float; lanes past count repeat
 // entry 0 and are left out): the same float operations in the same order as the scalar tests,
-// without FMA (target avx2 alone), so the same bits (tests/unit/test_lobe_tree.cpp compares them).
+// without FMA (target avx2 alone), so the same bits, the radii m_out included (every lane's; the
+// caller reads the kept ones; tests/unit/test_lobe_tree.cpp compares them).
 // Entry by entry the tests and the loop around them took about 40 instructions an entry; in lanes
 // a query takes 11% fewer instructions (glint_frame_loop lobe-tree metal 1 under callgrind: 429M
 // to 381M a pass; pyramids 211M to 186M; the same sums; README, "Lobe trees").

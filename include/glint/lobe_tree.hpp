@@ -456,10 +456,13 @@ bool lobe_outside_sbox(const glm::vec<4, real, glm::defaultp>& b, real mean_x, r
     return std::fabs(dx * b.x + dy * b.y) > b.z || std::fabs(dy * b.x - dx * b.y) > b.w;
 }
 
+// The squared Mahalanobis radius of position u in the footprint (the kernel's own arithmetic, as
+// glint_pndf_element's); outside the culling ellipse where it exceeds cull2, and the term, which
+// takes it (glint_pndf_weight_at, glint_pndf_element_at), is 0 there.
 template <class real>
-bool lobe_outside_footprint(const vec2_t<real>& u, const typename glsl::kernels<real>::glint_pndf_frame& f, real cull2) {
+real lobe_footprint_radius(const vec2_t<real>& u, const typename glsl::kernels<real>::glint_pndf_frame& f) {
     using k = glsl::kernels<real>;
-    return k::glint_pndf_mahalanobis_u(k::glint_pndf_offset(u, f), f) > cull2;
+    return k::glint_pndf_mahalanobis_u(k::glint_pndf_offset(u, f), f);
 }
 
 // Bit i set where entry i of a leaf's `count` (at most 8) passes both tests; then m[i] is its
@@ -467,13 +470,12 @@ bool lobe_outside_footprint(const vec2_t<real>& u, const typename glsl::kernels<
 template <class real>
 unsigned lobe_leaf_candidates_scalar(const real* entries, unsigned count, const vec2_t<real>& s, const vec2_t<real>& u_offset,
                                      const typename glsl::kernels<real>::glint_pndf_frame& f, real cull2, real m[8]) {
-    using k = glsl::kernels<real>;
     unsigned keep = 0;
     for (unsigned i = 0; i < count; ++i) {
         const real* x = entries + 12 * i;
         const glm::vec<4, real, glm::defaultp> bound(x[8], x[9], x[10], x[11]);
         if (lobe_outside_sbox(bound, x[2], x[3], s)) continue;
-        const real mi = k::glint_pndf_mahalanobis_u(k::glint_pndf_offset(vec2_t<real>(x[0], x[1]) + u_offset, f), f);  // lobe_outside_footprint's
+        const real mi = lobe_footprint_radius(vec2_t<real>(x[0], x[1]) + u_offset, f);
         if (mi > cull2) continue;
         m[i] = mi;
         keep |= 1u << i;
@@ -522,7 +524,7 @@ __attribute__((noinline, target("avx2"))) inline unsigned lobe_leaf_candidates_x
     const f32x8 along = reinterpret_cast<f32x8>(reinterpret_cast<i32x8>(dx * bd[0] + dy * bd[1]) & magnitude);
     const f32x8 across = reinterpret_cast<f32x8>(reinterpret_cast<i32x8>(dy * bd[0] - dx * bd[1]) & magnitude);
     const i32x8 out_s = (along > bd[2]) | (across > bd[3]);
-    // lobe_outside_footprint: u = us.xy + u_offset, e = glint_pndf_offset(u, f), m = glint_pndf_mahalanobis_u(e, f)
+    // lobe_footprint_radius: u = us.xy + u_offset, e = glint_pndf_offset(u, f), m = glint_pndf_mahalanobis_u(e, f)
     const f32x8 ux = us[0] + ox, uy = us[1] + oy;
     const f32x8 mx = f.mean.x - ux, my = f.mean.y - uy;
     const f32x8 ex = f.axis.x * mx + f.axis.y * my, ey = -f.axis.y * mx + f.axis.x * my;
@@ -1597,10 +1599,6 @@ private:
         return w * g;
     }
 
-    // Whether a seed at u lies outside the footprint's culling ellipse, where its term is 0: the
-    // kernel's own test (glint_pndf_element's, the same arithmetic), made before the term.
-    bool outside_footprint(const vec2& u, const frame& f) const noexcept { return detail::lobe_outside_footprint(u, f, k_.cull_u * k_.cull_u); }
-
     static bool outside_sbox(const vec4& b, const element& el, const vec2& s) { return detail::lobe_outside_sbox(b, el.us.z, el.us.w, s); }
 
     std::size_t cell_of(const lobe_set& t, const vec2& s, int l) const noexcept {
@@ -1785,10 +1783,13 @@ private:
         const auto ry = kernels::glint_pndf_axis_range(f.mean.y, f.extent.y, k_.spacing, k_.max_side);
         const long lw = k_.width, lh = k_.height, e = ept_, st_lat = static_cast<long>(m.stride()) * e, core0 = static_cast<long>(m.overlap() + 2) * e;
         real sum = 0;
+        const real cull2 = k_.cull_u * k_.cull_u;
         const auto add = [&](const entry& x, const vec2& u) GLINT_FLATTEN {
-            if (outside_sbox(x.bound, x.el, s) || outside_footprint(u, f)) return;
+            if (outside_sbox(x.bound, x.el, s)) return;
+            const real m_u = detail::lobe_footprint_radius(u, f);
+            if (m_u > cull2) return;
             ++st.lobes;
-            sum += term(x.el, u, f, s, sz, k_);
+            sum += term(x.el, u, m_u, f, s, sz, k_);
         };
         for (long j = ry.x; j <= ry.y; ++j) {
             const long jj = wrap(j, lh), by = std::min<long>(jj / st_lat, m.blocks_y() - 1), ly = jj - by * st_lat;
@@ -1816,8 +1817,8 @@ private:
 
     // The boundary set's part: walked in H over the box's periodic images.
     real sum_boundary(const frame& f, const vec2& s, lobe_query_stats& st) const noexcept {
-        const real sz = slope_z(s);
         if (boundary_lobes_.empty()) return real(0);
+        const real sz = slope_z(s);
         const real W = static_cast<real>(map_.width()), H = static_cast<real>(map_.height());
         const real x0 = f.mean.x - f.extent.x, x1 = f.mean.x + f.extent.x, y0 = f.mean.y - f.extent.y, y1 = f.mean.y + f.extent.y;
         const long ix0 = static_cast<long>(std::floor(x0 / W)), ix1 = static_cast<long>(std::floor(x1 / W));

@@ -13,6 +13,8 @@
 //                                          channel (what a glint frame reads); prints the least
 //                                          frame time
 //   glint_frame_loop ibl-radiance K FRAMES the lookups of the radiance alone (the smooth frame's)
+//   glint_frame_loop ibl-pixels K          what the ibl frame's pixels draw: the vertices a pixel,
+//                                          N, the trials a vertex, the lit levels' share
 //   glint_frame_loop draw N P              2e5 draws of glint::binomial_unbiased at (N, P)
 //   glint_frame_loop draw-time N P PAIRS   ns a draw at (N, P) over PAIRS uniform pairs cycled (the
 //                                          report's 65536; 1024 lets the branch predictor learn the
@@ -161,6 +163,37 @@ int main(int argc, char** argv) {
             least = std::min(least, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
         }
         std::printf("%s: %.0f us a frame (the least of %d)\n", mode, 1e6 * least, frames);
+    } else if (argc == 3 && !std::strcmp(mode, "ibl-pixels")) {
+        using k = glint::detail::glsl::kernels<float>;
+        const auto env = sunset_environment(std::atoi(argv[2]));
+        const float sa = 0.35f, dh = env.total_area(sa * sa);
+        long pixels = 0, vertices = 0, by_count[13] = {};
+        double N_sum = 0, lit_sum = 0, n_min = 1e30, n_max = 0;
+        for (int y = 0; y < 100; ++y)
+            for (int x = 0; x < 160; ++x) {
+                glm::vec3 n;
+                if (!sphere_normal(x, y, n)) continue;
+                const auto s = env.lookup(glm::reflect(glm::vec3(0, 0, -1), n), sa);
+                glint::grid_params<float> g;
+                g.log_density = 4.0f;  // the ibl frame's
+                auto px = glint::grid_pixel_setup(glm::vec2(static_cast<float>(x), static_cast<float>(y)), glm::vec2(1, 0), glm::vec2(0, 1), g, -1.0f);
+                k::glint_grid_pixel_vertices(px, glint::detail::to_kernel(g));
+                int present = 0;
+                for (int i = 0; i < px.v.count; ++i) {
+                    if (!(px.v.weight[i] > 0)) continue;
+                    const double trials = static_cast<double>(px.N * px.v.share[i]);
+                    n_min = std::min(n_min, trials), n_max = std::max(n_max, trials);
+                    ++present;
+                }
+                const auto p = k::glint_ibl_probabilities(env.levels(), s.indicators, env.visible_area(n.z, sa), dh);
+                for (int l = 1; l < env.levels().count; ++l) lit_sum += static_cast<double>(p.p[l]);
+                ++pixels, vertices += present, ++by_count[present], N_sum += static_cast<double>(px.N);
+            }
+        std::printf("ibl-pixels: %ld pixels, %.2f vertices a pixel, N %.2f a pixel on average, %.2f to %.2f trials a vertex, lit levels' share %.3f\n", pixels,
+                    static_cast<double>(vertices) / static_cast<double>(pixels), N_sum / static_cast<double>(pixels), n_min, n_max, lit_sum / static_cast<double>(pixels));
+        for (int c = 0; c <= 12; ++c)
+            if (by_count[c] > 0) std::printf("  %ld pixels draw %d vertices\n", by_count[c], c);
+        return 0;
     } else if (argc == 4 && !std::strcmp(mode, "draw")) {
         const float N = std::strtof(argv[2], nullptr), p = std::strtof(argv[3], nullptr);
         for (std::uint32_t i = 0; i < 200000; ++i) {
@@ -212,7 +245,7 @@ int main(int argc, char** argv) {
         }
         std::printf("lobe-tree %s: %.0f ns a query (the least of %s passes of %zu)\n", argv[2], least, argv[3], q.size());
     } else {
-        std::fprintf(stderr, "usage: glint_frame_loop point|point-smooth|point-stochastic FRAMES | ibl|ibl-stochastic|ibl-lookup|ibl-radiance K FRAMES | draw N P | draw-time N P PAIRS | lights K MODE REPS | lobe-tree metal|pyramids PASSES\n");
+        std::fprintf(stderr, "usage: glint_frame_loop point|point-smooth|point-stochastic FRAMES | ibl|ibl-stochastic|ibl-lookup|ibl-radiance K FRAMES | ibl-pixels K | draw N P | draw-time N P PAIRS | lights K MODE REPS | lobe-tree metal|pyramids PASSES\n");
         return 2;
     }
     std::printf("%s: sum %.9g\n", mode, sum);

@@ -95,6 +95,16 @@ bool sphere_normal(int x, int y, glm::vec3& n) {
     return true;
 }
 
+// Calls fn(x, y, n) for every pixel of that view on the sphere.
+template <class F>
+void for_each_sphere_pixel(F&& fn) {
+    for (int y = 0; y < 100; ++y)
+        for (int x = 0; x < 160; ++x) {
+            glm::vec3 n;
+            if (sphere_normal(x, y, n)) fn(x, y, n);
+        }
+}
+
 // One lobe-forest query, out of line for callgrind's --toggle-collect.
 __attribute__((noinline)) float lobe_forest_eval(const glint_bench::forest& f, const glint_bench::query& q) { return f.eval(q.fp, q.s); }
 
@@ -123,19 +133,16 @@ int main(int argc, char** argv) {
         double least = 1e30;
         for (int frame = 0; frame < frames; ++frame) {
             const auto frame_start = std::chrono::steady_clock::now();
-            for (int y = 0; y < 100; ++y)
-                for (int x = 0; x < 160; ++x) {
-                    glm::vec3 n;
-                    if (!sphere_normal(x, y, n)) continue;
-                    const auto s = env.lookup(glm::reflect(glm::vec3(0, 0, -1), n), sa);
-                    glint::grid_params<float> g;
-                    g.log_density = 4.0f;
-                    g.seed = static_cast<std::uint32_t>(frame);
-                    const glm::vec2 uv(static_cast<float>(x), static_cast<float>(y));
-                    const float lattice_u = glint_examples::pixel_lattice_u(stochastic, x, y, g.seed);
-                    const auto e = glint_ibl_estimate(uv, g, env, s, env.visible_area(n.z, sa), dh, lattice_u);
-                    sum += static_cast<double>(glint::modulation(e));
-                }
+            for_each_sphere_pixel([&](int x, int y, const glm::vec3& n) {
+                const auto s = env.lookup(glm::reflect(glm::vec3(0, 0, -1), n), sa);
+                glint::grid_params<float> g;
+                g.log_density = 4.0f;
+                g.seed = static_cast<std::uint32_t>(frame);
+                const glm::vec2 uv(static_cast<float>(x), static_cast<float>(y));
+                const float lattice_u = glint_examples::pixel_lattice_u(stochastic, x, y, g.seed);
+                const auto e = glint_ibl_estimate(uv, g, env, s, env.visible_area(n.z, sa), dh, lattice_u);
+                sum += static_cast<double>(glint::modulation(e));
+            });
             least = std::min(least, std::chrono::duration<double>(std::chrono::steady_clock::now() - frame_start).count());
         }
         const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -148,18 +155,15 @@ int main(int argc, char** argv) {
         double least = 1e30;
         for (int frame = 0; frame < frames; ++frame) {
             const auto start = std::chrono::steady_clock::now();
-            for (int y = 0; y < 100; ++y)
-                for (int x = 0; x < 160; ++x) {
-                    glm::vec3 n;
-                    if (!sphere_normal(x, y, n)) continue;
-                    const glm::vec3 r = glm::reflect(glm::vec3(0, 0, -1), n);
-                    if (all) {
-                        const auto s = env.lookup(r, sa);
-                        sum += static_cast<double>(s.radiance.x + s.indicators.w[1]);
-                    } else {
-                        sum += static_cast<double>(env.lookup_radiance(r, sa).x);
-                    }
+            for_each_sphere_pixel([&](int, int, const glm::vec3& n) {
+                const glm::vec3 r = glm::reflect(glm::vec3(0, 0, -1), n);
+                if (all) {
+                    const auto s = env.lookup(r, sa);
+                    sum += static_cast<double>(s.radiance.x + s.indicators.w[1]);
+                } else {
+                    sum += static_cast<double>(env.lookup_radiance(r, sa).x);
                 }
+            });
             least = std::min(least, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
         }
         std::printf("%s: %.0f us a frame (the least of %d)\n", mode, 1e6 * least, frames);
@@ -169,26 +173,23 @@ int main(int argc, char** argv) {
         const float sa = 0.35f, dh = env.total_area(sa * sa);
         long pixels = 0, vertices = 0, by_count[13] = {};
         double N_sum = 0, lit_sum = 0, n_min = 1e30, n_max = 0;
-        for (int y = 0; y < 100; ++y)
-            for (int x = 0; x < 160; ++x) {
-                glm::vec3 n;
-                if (!sphere_normal(x, y, n)) continue;
-                const auto s = env.lookup(glm::reflect(glm::vec3(0, 0, -1), n), sa);
-                glint::grid_params<float> g;
-                g.log_density = 4.0f;  // the ibl frame's
-                auto px = glint::grid_pixel_setup(glm::vec2(static_cast<float>(x), static_cast<float>(y)), glm::vec2(1, 0), glm::vec2(0, 1), g, -1.0f);
-                k::glint_grid_pixel_vertices(px, glint::detail::to_kernel(g));
-                int present = 0;
-                for (int i = 0; i < px.v.count; ++i) {
-                    if (!(px.v.weight[i] > 0)) continue;
-                    const double trials = static_cast<double>(px.N * px.v.share[i]);
-                    n_min = std::min(n_min, trials), n_max = std::max(n_max, trials);
-                    ++present;
-                }
-                const auto p = k::glint_ibl_probabilities(env.levels(), s.indicators, env.visible_area(n.z, sa), dh);
-                for (int l = 1; l < env.levels().count; ++l) lit_sum += static_cast<double>(p.p[l]);
-                ++pixels, vertices += present, ++by_count[present], N_sum += static_cast<double>(px.N);
+        for_each_sphere_pixel([&](int x, int y, const glm::vec3& n) {
+            const auto s = env.lookup(glm::reflect(glm::vec3(0, 0, -1), n), sa);
+            glint::grid_params<float> g;
+            g.log_density = 4.0f;  // the ibl frame's
+            auto px = glint::grid_pixel_setup(glm::vec2(static_cast<float>(x), static_cast<float>(y)), glm::vec2(1, 0), glm::vec2(0, 1), g, -1.0f);
+            k::glint_grid_pixel_vertices(px, glint::detail::to_kernel(g));
+            int present = 0;
+            for (int i = 0; i < px.v.count; ++i) {
+                if (!(px.v.weight[i] > 0)) continue;
+                const double trials = static_cast<double>(px.N * px.v.share[i]);
+                n_min = std::min(n_min, trials), n_max = std::max(n_max, trials);
+                ++present;
             }
+            const auto p = k::glint_ibl_probabilities(env.levels(), s.indicators, env.visible_area(n.z, sa), dh);
+            for (int l = 1; l < env.levels().count; ++l) lit_sum += static_cast<double>(p.p[l]);
+            ++pixels, vertices += present, ++by_count[present], N_sum += static_cast<double>(px.N);
+        });
         std::printf("ibl-pixels: %ld pixels, %.2f vertices a pixel, N %.2f a pixel on average, %.2f to %.2f trials a vertex, lit levels' share %.3f\n", pixels,
                     static_cast<double>(vertices) / static_cast<double>(pixels), N_sum / static_cast<double>(pixels), n_min, n_max, lit_sum / static_cast<double>(pixels));
         for (int c = 0; c <= 12; ++c)

@@ -9,6 +9,10 @@
 //   glint_frame_loop ibl-stochastic K FRAMES  the same on one lattice point per pixel
 //                                          (sunset.exr); count it alone with
 //                                          --toggle-collect='glint_ibl_estimate*'
+//   glint_frame_loop ibl-rows K FRAMES     the same frame a row at a time (glint::ibl_sample_pixels,
+//                                          eight pixels in AVX2 lanes); count it alone with
+//                                          --toggle-collect='glint_ibl_estimate_row*'
+//   glint_frame_loop ibl-rows-stochastic K FRAMES  the same on one lattice point per pixel
 //   glint_frame_loop ibl-lookup K FRAMES   the same sphere's environment lookups alone, of every
 //                                          channel (what a glint frame reads); prints the least
 //                                          frame time
@@ -78,6 +82,15 @@ __attribute__((noinline)) glint::ibl_estimate<float> glint_ibl_estimate(glm::vec
     return glint::ibl_sample(px, g, env.levels(), s.indicators, e_d, d_h);
 }
 
+// The same for `count` pixels of a row at once (glint::ibl_sample_pixels).
+__attribute__((noinline)) void glint_ibl_estimate_row(int count, const glm::vec2* uv, const glint::grid_params<float>& g, const glint::environment& env,
+                                                      const glint::ibl_indicators<float>* ind, const float* e_d, float d_h, const float* lattice_u,
+                                                      glint::ibl_estimate<float>* out) {
+    glint::grid_pixel<float> px[160];
+    for (int i = 0; i < count; ++i) px[i] = glint::grid_pixel_setup(uv[i], glm::vec2(1, 0), glm::vec2(0, 1), g, lattice_u[i]);
+    glint::ibl_sample_pixels(count, px, g, env.levels(), ind, e_d, d_h, out);
+}
+
 // The IBL workloads' environment: sunset.exr with K levels.
 glint::environment sunset_environment(int levels) {
     const auto img = glint::io::read_exr(std::string(GLINT_DATA_DIR) + "/envmaps/sunset.exr");
@@ -143,6 +156,39 @@ int main(int argc, char** argv) {
                 const auto e = glint_ibl_estimate(uv, g, env, s, env.visible_area(n.z, sa), dh, lattice_u);
                 sum += static_cast<double>(glint::modulation(e));
             });
+            least = std::min(least, std::chrono::duration<double>(std::chrono::steady_clock::now() - frame_start).count());
+        }
+        const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        std::printf("%s: %.0f us a frame (mean of %d; the least %.0f us)\n", mode, 1e6 * seconds / std::max(frames, 1), frames, 1e6 * least);
+    } else if (argc == 4 && (!std::strcmp(mode, "ibl-rows") || !std::strcmp(mode, "ibl-rows-stochastic"))) {
+        const bool stochastic = !std::strcmp(mode, "ibl-rows-stochastic");
+        const auto env = sunset_environment(std::atoi(argv[2]));
+        const float sa = 0.35f, dh = env.total_area(sa * sa);
+        const auto start = std::chrono::steady_clock::now();
+        const int frames = std::atoi(argv[3]);
+        double least = 1e30;
+        for (int frame = 0; frame < frames; ++frame) {
+            const auto frame_start = std::chrono::steady_clock::now();
+            glint::grid_params<float> g;
+            g.log_density = 4.0f;
+            g.seed = static_cast<std::uint32_t>(frame);
+            for (int y = 0; y < 100; ++y) {
+                glm::vec2 uv[160];
+                glint::ibl_indicators<float> ind[160];
+                float e_d[160], lattice_u[160];
+                glint::ibl_estimate<float> e[160];
+                int count = 0;
+                for (int x = 0; x < 160; ++x) {
+                    glm::vec3 n;
+                    if (!sphere_normal(x, y, n)) continue;
+                    ind[count] = env.lookup(glm::reflect(glm::vec3(0, 0, -1), n), sa).indicators;
+                    e_d[count] = env.visible_area(n.z, sa);
+                    lattice_u[count] = glint_examples::pixel_lattice_u(stochastic, x, y, g.seed);
+                    uv[count++] = glm::vec2(static_cast<float>(x), static_cast<float>(y));
+                }
+                glint_ibl_estimate_row(count, uv, g, env, ind, e_d, dh, lattice_u, e);
+                for (int i = 0; i < count; ++i) sum += static_cast<double>(glint::modulation(e[i]));
+            }
             least = std::min(least, std::chrono::duration<double>(std::chrono::steady_clock::now() - frame_start).count());
         }
         const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -246,7 +292,7 @@ int main(int argc, char** argv) {
         }
         std::printf("lobe-tree %s: %.0f ns a query (the least of %s passes of %zu)\n", argv[2], least, argv[3], q.size());
     } else {
-        std::fprintf(stderr, "usage: glint_frame_loop point|point-smooth|point-stochastic FRAMES | ibl|ibl-stochastic|ibl-lookup|ibl-radiance K FRAMES | ibl-pixels K | draw N P | draw-time N P PAIRS | lights K MODE REPS | lobe-tree metal|pyramids PASSES\n");
+        std::fprintf(stderr, "usage: glint_frame_loop point|point-smooth|point-stochastic FRAMES | ibl|ibl-stochastic|ibl-rows|ibl-rows-stochastic|ibl-lookup|ibl-radiance K FRAMES | ibl-pixels K | draw N P | draw-time N P PAIRS | lights K MODE REPS | lobe-tree metal|pyramids PASSES\n");
         return 2;
     }
     std::printf("%s: sum %.9g\n", mode, sum);

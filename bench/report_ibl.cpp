@@ -76,11 +76,21 @@ section ibl_section(double min_time) {
     // Shading: per pixel of a 160 x 100 view of the sphere, smooth (mode 0) against glints (1), and
     // glints on one lattice point per pixel (2; glint::grid_pixel_setup with a lattice_u).
     const char* labels[] = {"K=4 linear", "K=4 log", "K=8 linear", "K=8 log"};
-    // The rows first, first + step, ... of frame `it` (its seed) in a mode.
+    // The rows first, first + step, ... of frame `it` (its seed) in a mode. Glint frames shade a
+    // row's pixels together, as a CPU renderer shades a row: glint::ibl_sample_pixels, eight pixels
+    // a pass in AVX2 lanes (DEVELOPERS.md measures it against one pixel at a time, and eight).
     auto frame_rows = [](const glint::environment* env, int mode, int first, int step, std::size_t it) {
         float acc = 0;
         const float sa = 0.35f, alpha = sa * sa, dh = env->total_area(alpha);
-        for (int y = first; y < 100; y += step)
+        glint::grid_params<float> g;
+        g.log_density = 4.0f;
+        g.seed = static_cast<std::uint32_t>(it);
+        for (int y = first; y < 100; y += step) {
+            glint::grid_pixel<float> pixel[160];
+            glint::ibl_indicators<float> ind[160];
+            glint::ibl_estimate<float> est[160];
+            float e_d[160], shade[160];
+            int count = 0;
             for (int x = 0; x < 160; ++x) {
                 // A sphere seen from afar: normal from the pixel, view along -z.
                 const float px = (static_cast<float>(x) - 80) / 50, py = (50 - static_cast<float>(y)) / 50, rr = px * px + py * py;
@@ -89,22 +99,25 @@ section ibl_section(double min_time) {
                 const float cos_o = n.z;
                 // Smooth shading reads the radiance alone, glints the K indicators too.
                 const glm::vec3 r = glm::reflect(d, n);
-                float m = 1, radiance = 0;
                 if (mode == 0) {
-                    radiance = env->lookup_radiance(r, sa).x;
-                } else {
-                    const auto s = env->lookup(r, sa);
-                    radiance = s.radiance.x;
-                    glint::grid_params<float> g;
-                    g.log_density = 4.0f;
-                    g.seed = static_cast<std::uint32_t>(it);
-                    const glm::vec2 uv(static_cast<float>(x), static_cast<float>(y));
-                    auto pixel = glint::grid_pixel_setup(uv, glm::vec2(1, 0), glm::vec2(0, 1), g, glint_examples::pixel_lattice_u(mode == 2, x, y, g.seed));
-                    const auto est = glint::ibl_sample(pixel, g, env->levels(), s.indicators, env->visible_area(cos_o, sa), dh);
-                    m = glint::modulation(est);
+                    acc += env->albedo(cos_o, sa) * env->lookup_radiance(r, sa).x;
+                    continue;
                 }
-                acc += env->albedo(cos_o, sa) * radiance * m;
+                const auto s = env->lookup(r, sa);
+                shade[count] = env->albedo(cos_o, sa) * s.radiance.x;
+                ind[count] = s.indicators;
+                e_d[count] = env->visible_area(cos_o, sa);
+                const glm::vec2 uv(static_cast<float>(x), static_cast<float>(y));
+                if (mode == 2) {  // one lattice point: ibl_sample_pixels draws such pixels one at a time, as here
+                    auto one = glint::grid_pixel_setup(uv, glm::vec2(1, 0), glm::vec2(0, 1), g, glint_examples::pixel_lattice_u(true, x, y, g.seed));
+                    acc += shade[count] * glint::modulation(glint::ibl_sample(one, g, env->levels(), s.indicators, e_d[count], dh));
+                    continue;
+                }
+                pixel[count++] = glint::grid_pixel_setup(uv, glm::vec2(1, 0), glm::vec2(0, 1), g);
             }
+            glint::ibl_sample_pixels(count, pixel, g, env->levels(), ind, e_d, dh, est);
+            for (int i = 0; i < count; ++i) acc += shade[i] * glint::modulation(est[i]);
+        }
         benchmark::DoNotOptimize(acc);
     };
     // Each frame in round_count rounds (report.hpp), the least time of each; the linear knob's

@@ -69,6 +69,18 @@ ibl_estimate<real> ibl_sample(grid_pixel<real>& px, const grid_params<real>& g, 
     return detail::glsl::kernels<real>::glint_ibl_sample_pixel(px, detail::to_kernel(g), levels, indicators, e_d, d_h);
 }
 
+// Several pixels at once, as a CPU renderer shades a row or a tile: out[i] = ibl_sample(px[i], g,
+// levels, indicators[i], e_d[i], d_h) for i < count (count <= 0: nothing), the draws and the
+// expectation exactly and the value to float rounding (its vertices' counts are the same; their
+// weighted sums are added in another order). For float where the CPU has AVX2, eight pixels share
+// each pass of their draws in vector lanes (kernels/ibl.glsl, glint_ibl_sample_pixels; docs/ibl.md
+// measures it); elsewhere one pixel at a time. Nothing allocated; the arrays hold count entries.
+template <class real>
+void ibl_sample_pixels(int count, grid_pixel<real>* px, const grid_params<real>& g, const ibl_levels<real>& levels, const ibl_indicators<real>* indicators,
+                       const real* e_d, real d_h, ibl_estimate<real>* out) {
+    detail::glsl::kernels<real>::glint_ibl_sample_pixels(count, px, detail::to_kernel(g), levels, indicators, e_d, d_h, out);
+}
+
 struct ibl_options {
     int levels = 4;             // K, 3..8 (KK25: 4 or 8)
     float black_level = 1e-3f;  // l: luminances below it count as l when placing the levels

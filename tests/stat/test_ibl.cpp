@@ -351,6 +351,84 @@ TEST_CASE("ibl: C++'s level shares, drawn four or eight lane groups at a time, e
     CHECK(differ == 0);
 }
 
+TEST_CASE("ibl: ibl_sample_pixels (eight pixels a pass in AVX2 lanes) gives ibl_sample's draws and expectation exactly, its value to float rounding") {
+    // Rows of pixels with their own directions (so each lane of a pass has its own thresholds),
+    // footprints from 0.3 to 3 texels and densities from e^0 to e^6: vertices in the pass, with one
+    // and two lane groups, and pixels that the pass leaves to ibl_sample whole (a vertex with N
+    // below 4 or above 63, one lattice point, a log-normal density, a published variant), pixels
+    // the smooth gate returns, and rows of 1 to 37 pixels. The counts are the same vertex by
+    // vertex; the batch adds each pass's l_t M_k lane-wise in slot order, ibl_sample across its
+    // groups. Every term is non-negative, so each share's sum (at most 24 terms) is within
+    // 24 2^-24 of its terms' total in either order, and the value, sum_k L_k share_k, within
+    // tol = 4e-6 of itself (2 x 1.4e-6 for the two sums, and the division and the products).
+    // A one-trial miscount moves the value by at least L_1 l_t / N (a trial that changes level);
+    // the test states at how many vertices that is above tol. The wrong variant: a reference
+    // drawn with each pixel's neighbour's indicators (what a batch that gave a lane another lane's
+    // thresholds would compute) must differ at most pixels whose value is not 0.
+    long pixels = 0, drawing = 0, differ = 0, swapped_differ = 0, swapped_drawing = 0, rows = 0, vertices = 0, resolved = 0;
+    double worst = 0;
+    std::uint32_t salt = 100;
+    for (const char* name : {"city", "studio"})
+        for (int levels : {4, 8})
+            for (int setting = 0; setting < 6; ++setting)
+                for (float logd : {0.0f, 2.0f, 4.0f, 6.0f}) {
+                    const auto& env = environment_of(name, levels);
+                    const auto& lv = env.levels();
+                    glint::grid_params<float> g;
+                    g.log_density = logd, g.seed = ++salt;
+                    g.smooth_tolerance = setting == 1 ? 0.3f : 0.0f;
+                    if (setting == 2) g.density_sigma = 0.4f;
+                    if (setting == 3) g.variant = glint::binomial_variant::dual_gated;
+                    const int count = 1 + static_cast<int>(salt % 37);
+                    glint::grid_pixel<float> px[37], single[37];
+                    glint::ibl_indicators<float> ind[37];
+                    float e_d[37];
+                    glint::ibl_estimate<float> out[37];
+                    const float sa = 0.5f, d_h = env.total_area(sa * sa);
+                    for (int i = 0; i < count; ++i) {
+                        const glm::uvec3 h = glint::pcg3d(glm::uvec3(static_cast<std::uint32_t>(i), salt, 13u));
+                        const glm::vec2 uv(glint::unit_from_bits<float>(h.x) * 300.0f, glint::unit_from_bits<float>(h.y) * 300.0f);
+                        const float size = 0.3f + 2.7f * glint::unit_from_bits<float>(h.z);
+                        const float lattice_u = (setting == 4 && i % 2 == 0) ? glint::unit_from_bits<float>(h.x ^ h.y) : -1.0f;
+                        px[i] = glint::grid_pixel_setup(uv, glm::vec2(size, 0.3f * size), glm::vec2(-0.2f * size, size), g, lattice_u);
+                        single[i] = px[i];
+                        ind[i] = env.lookup(direction(static_cast<std::uint32_t>(i), salt), sa).indicators;
+                        e_d[i] = env.visible_area(0.3f + 0.7f * glint::unit_from_bits<float>(h.y ^ h.z), sa);
+                    }
+                    glint::ibl_sample_pixels(count, px, g, lv, ind, e_d, d_h, out);
+                    ++rows;
+                    for (int i = 0; i < count; ++i) {
+                        auto ref_px = single[i];
+                        const auto ref = glint::ibl_sample(ref_px, g, lv, ind[i], e_d[i], d_h);
+                        const double tol = 4e-6 * static_cast<double>(ref.value);
+                        const double d = std::fabs(static_cast<double>(out[i].value) - static_cast<double>(ref.value));
+                        if (tol > 0) worst = std::max(worst, d / tol);
+                        differ += !(out[i].draws == ref.draws && out[i].expected == ref.expected && d <= tol);
+                        for (int v = 0; v < ref_px.v.count && ref.draws > 0; ++v)
+                            if (ref_px.v.weight[v] > 0) {
+                                ++vertices;
+                                resolved += static_cast<double>(lv.radiance[1]) * static_cast<double>(ref_px.v.weight[v]) / static_cast<double>(ref_px.N) > tol;
+                            }
+                        drawing += ref.draws > 0;
+                        ++pixels;
+                        if (count > 1 && ref.value > 0) {
+                            auto swapped_px = single[i];
+                            const auto swapped = glint::ibl_sample(swapped_px, g, lv, ind[(i ^ 1) < count ? (i ^ 1) : i - 1], e_d[i], d_h);
+                            ++swapped_drawing;
+                            swapped_differ += std::fabs(static_cast<double>(out[i].value) - static_cast<double>(swapped.value)) > tol;
+                        }
+                    }
+                }
+    MESSAGE(rows << " rows, " << pixels << " pixels, " << drawing << " drawing; " << differ << " differ from ibl_sample (the largest value difference "
+                 << worst << " tol); a one-trial miscount is above tol at " << resolved << " of " << vertices
+                 << " drawing vertices; with the neighbour's indicators " << swapped_differ << " of " << swapped_drawing << " differ");
+    CHECK(rows == 2 * 2 * 6 * 4);
+    CHECK(drawing >= pixels / 3);
+    CHECK(differ == 0);
+    CHECK(swapped_differ >= swapped_drawing * 3 / 4);  // not all: close probabilities often draw the same counts
+    CHECK(resolved >= vertices * 9 / 10);
+}
+
 TEST_CASE("ibl: on each real map, every level's expected share of reflecting microfacets is its probability p_k (K = 4 and 8)") {
     const share_scan o = scan_level_shares(4, 2);  // mean-preserving, log1p
     MESSAGE(o.tested << " level shares tested (" << o.untested << " too rare, carrying " << 100 * (1 - o.covered / o.total)

@@ -94,8 +94,22 @@ struct glint_ibl_shares {
     int draws;
 };
 
+#if !defined(GLINT_GLSL)
+// C++ only: the pass's weighted counts of a pixel's vertices, drawn by glint_ibl_sample_pixels'
+// lanes, for glint_ibl_level_shares to go on from.
+struct glint_ibl_predrawn {
+    real weighted[8];
+};
+#endif
+
+// (C++: where `pre` is given, the vertices that the bit-sliced pass takes were drawn already, and
+// their weighted counts are pre->weighted.)
 GLINT_FN glint_ibl_shares glint_ibl_level_shares(GLINT_INOUT(glint_grid_pixel) px, GLINT_IN(glint_grid_params) g, int K,
-                                                 GLINT_IN(glint_multinomial_probabilities) lit) {
+                                                 GLINT_IN(glint_multinomial_probabilities) lit
+#if !defined(GLINT_GLSL)
+                                                 , const glint_ibl_predrawn* pre = nullptr
+#endif
+) {
     glint_ibl_shares o;
     for (int k = 0; k < 8; ++k) o.share[k] = real(0);
     o.draws = 0;
@@ -150,7 +164,11 @@ GLINT_FN glint_ibl_shares glint_ibl_level_shares(GLINT_INOUT(glint_grid_pixel) p
         for (int l = 0; l < 4; ++l) batched += batched_lanes[l], present_count += present_lanes[l], in_batch |= uint(batch_bits[l]);
     }
     glint_pcg3d_many(px.v.hash_x, px.v.hash_y, px.v.hash_z, px.v.count, root_x, root_y, root_z);
-    glint_multinomial_exact_all_weighted(tree, in_batch, batch_N, root_x, root_y, root_z, px.v.weight, weighted);
+    if (pre) {
+        for (int k = 0; k < 8; ++k) weighted[k] = pre->weighted[k];
+    } else {
+        glint_multinomial_exact_all_weighted(tree, in_batch, batch_N, root_x, root_y, root_z, px.v.weight, weighted);
+    }
     o.draws += batched * (K - 1);  // N total >= 1 there: the skip test below never fires
     bool rest = batched < present_count;  // vertices left to the loop below
 #else
@@ -203,6 +221,41 @@ GLINT_FN glint_multinomial_probabilities glint_ibl_lit_levels(GLINT_IN(glint_mul
     return lit;
 }
 
+// The first part of glint_ibl_sample_pixel: the level probabilities `all`, o.expected = sum_k
+// L_k p_k, and whether the estimate needs draws; where it does not, o is the estimate (nothing
+// bright can be reflected: 0; or R's bound on the relative sd is below the tolerance: E[R]).
+GLINT_FN bool glint_ibl_needs_draws(GLINT_IN(glint_grid_params) g, GLINT_IN(glint_ibl_levels) lv, GLINT_IN(glint_ibl_indicators) ind, real e_d, real d_h,
+                                    real N, GLINT_OUT(glint_multinomial_probabilities) all, GLINT_OUT(glint_grid_estimate) o) {
+    o.value = real(0);
+    o.expected = real(0);
+    o.draws = 0;
+    int K = clamp(lv.count, 3, GLINT_IBL_MAX_LEVELS);
+    all = glint_ibl_probabilities(lv, ind, e_d, d_h);
+    real second = real(0);  // sum_k L_k^2 p_k, for the variance bound
+    for (int k = 1; k < 8; ++k) {
+        real L = (k < K) ? lv.radiance[k] : real(0);
+        o.expected += L * all.p[k];
+        second += L * L * all.p[k];
+    }
+    if (!(o.expected > real(0))) return false;  // nothing bright can be reflected: no sampling
+    // Var(sum_k L_k M_k / N) <= sum_k L_k^2 p_k / N (each multinomial count's variance is at most
+    // its mean; the covariances are negative), plus the log-normal density's share.
+    real var_bound = second / max(N, real(1e-30)) + glint_density_variance_factor(g) * o.expected * o.expected;
+    if (var_bound <= g.smooth_tolerance * g.smooth_tolerance * o.expected * o.expected) {
+        o.value = o.expected;
+        return false;
+    }
+    return true;
+}
+
+// sum_k L_k share_k over the lit levels (KK25 Eq. 17's numerator over N).
+GLINT_FN real glint_ibl_value(GLINT_IN(glint_ibl_levels) lv, GLINT_IN(glint_ibl_shares) sh) {
+    int K = clamp(lv.count, 3, GLINT_IBL_MAX_LEVELS);
+    real value = real(0);
+    for (int k = 1; k < 8; ++k) value += (k < K) ? lv.radiance[k] * sh.share[k] : real(0);
+    return value;
+}
+
 // The glint estimate for one footprint under the environment (KK25 Eq. 17), in grid.glsl's
 // estimate struct: value = sum_k L_k M_k / N, expected = sum_k L_k p_k, and glint_modulation
 // gives the factor on the smooth result. Same grid as glint_grid_sample, without the half-vector interpolation
@@ -211,28 +264,11 @@ GLINT_FN glint_multinomial_probabilities glint_ibl_lit_levels(GLINT_IN(glint_mul
 GLINT_FN glint_grid_estimate glint_ibl_sample_pixel(GLINT_INOUT(glint_grid_pixel) px, GLINT_IN(glint_grid_params) g, GLINT_IN(glint_ibl_levels) lv,
                                                    GLINT_IN(glint_ibl_indicators) ind, real e_d, real d_h) {
     glint_grid_estimate o;
-    o.value = real(0);
-    o.expected = real(0);
-    o.draws = 0;
+    glint_multinomial_probabilities all;
+    if (!glint_ibl_needs_draws(g, lv, ind, e_d, d_h, px.N, all, o)) return o;
     int K = clamp(lv.count, 3, GLINT_IBL_MAX_LEVELS);
-    glint_multinomial_probabilities all = glint_ibl_probabilities(lv, ind, e_d, d_h);
-    real second = real(0);  // sum_k L_k^2 p_k, for the variance bound
-    for (int k = 1; k < 8; ++k) {
-        real L = (k < K) ? lv.radiance[k] : real(0);
-        o.expected += L * all.p[k];
-        second += L * L * all.p[k];
-    }
-    if (!(o.expected > real(0))) return o;  // nothing bright can be reflected: no sampling
-    real N = px.N;
-    // Var(sum_k L_k M_k / N) <= sum_k L_k^2 p_k / N (each multinomial count's variance is at most
-    // its mean; the covariances are negative), plus the log-normal density's share.
-    real var_bound = second / max(N, real(1e-30)) + glint_density_variance_factor(g) * o.expected * o.expected;
-    if (var_bound <= g.smooth_tolerance * g.smooth_tolerance * o.expected * o.expected) {
-        o.value = o.expected;
-        return o;
-    }
     glint_ibl_shares sh = glint_ibl_level_shares(px, g, K, glint_ibl_lit_levels(all, K));
-    for (int k = 1; k < 8; ++k) o.value += (k < K) ? lv.radiance[k] * sh.share[k] : real(0);
+    o.value = glint_ibl_value(lv, sh);
     o.draws = sh.draws;
     return o;
 }
@@ -243,6 +279,384 @@ GLINT_FN glint_grid_estimate glint_ibl_sample(vec2 uv, vec2 duvdx, vec2 duvdy, g
     glint_grid_pixel px = glint_grid_pixel_setup(uv, duvdx, duvdy, g);
     return glint_ibl_sample_pixel(px, g, lv, ind, e_d, d_h);
 }
+
+#if !defined(GLINT_GLSL)
+// C++ only: glint_ibl_sample_pixel for several pixels, eight at a time in AVX2 lanes (lane v holds
+// pixel v; GPUs run a fragment a thread, so GLSL keeps the single pixel). A pixel's draw is one
+// bit-sliced pass over its vertices' lane groups (glint_multinomial_exact_all_weighted), six of
+// eight groups at the report's density, and the bookkeeping around it is scalar; here slot s's
+// vertices of eight pixels form one pass, each lane with its pixel's thresholds
+// (glint_multinomial_exact_lanes_pass), and the vertices' lanes, weights and root words are set up
+// eight pixels a vector. The counts are the single pixel's, vertex by vertex (the same words,
+// thresholds and trials); only their weighted sums are added in another order, so each estimate
+// equals glint_ibl_sample_pixel's to float rounding and its draws exactly
+// (tests/stat/test_ibl.cpp). The vertices that the pass does not take (N outside 4 to 63 or N total
+// below 1, a published variant) are drawn after it by glint_ibl_level_shares' loop, as for one pixel.
+struct glint_ibl_lanes {
+    uint c[8][8];          // [k][lane]: the pixel's thresholds (glint_multinomial_exact_all_thresholds)
+    uint full[8][8];       // all ones where c_k is full
+    uint lead_c[8][8];     // the same with each follower set to its last leader
+    uint lead_full[8][8];
+    uint has_follower[8];  // all ones in the lanes with a follower
+    uint none[8];          // zeros: no lane stops
+    real lit[8][8];        // [k][lane]: the lit levels' probabilities (glint_ibl_lit_levels)
+    real N[8];
+    real total[8];         // the tree root's total
+    int count[8];          // 12 where the lane's pixel draws (its four lattice points' slots), else 0
+    real share[12][8];     // [slot][lane]: the vertices, as glint_grid_vertices holds them
+    real weight[12][8];
+    uint hash_x[12][8], hash_y[12][8], hash_z[12][8];
+    real weighted[8][8];   // out, [k][lane]: sum over the vertices of l_t M_k
+    int batched[8];        // out: the vertices drawn
+    int rest;              // out: bit v set where lane v's pixel has vertices that the pass does not take
+};
+
+// Eight pixels' arrays of eight, row[v] pixel v's, as eight vectors: out[s][v] = row[v][s] (an 8 x 8
+// transpose in shuffles).
+template <class V, class E>
+__attribute__((always_inline)) static inline void glint_lanes_transpose8(const E* const row[8], V out[8]) {
+    V r[8];
+    for (int v = 0; v < 8; ++v) std::memcpy(&r[v], row[v], sizeof(V));
+    V t[8], u[8];
+    for (int h = 0; h < 4; ++h) {
+        t[2 * h] = __builtin_shufflevector(r[2 * h], r[2 * h + 1], 0, 8, 1, 9, 4, 12, 5, 13);
+        t[2 * h + 1] = __builtin_shufflevector(r[2 * h], r[2 * h + 1], 2, 10, 3, 11, 6, 14, 7, 15);
+    }
+    for (int h = 0; h < 2; ++h)
+        for (int e = 0; e < 2; ++e) {
+            u[4 * h + 2 * e] = __builtin_shufflevector(t[4 * h + e], t[4 * h + 2 + e], 0, 1, 8, 9, 4, 5, 12, 13);
+            u[4 * h + 2 * e + 1] = __builtin_shufflevector(t[4 * h + e], t[4 * h + 2 + e], 2, 3, 10, 11, 6, 7, 14, 15);
+        }
+    for (int j = 0; j < 4; ++j) {
+        out[j] = __builtin_shufflevector(u[j], u[4 + j], 0, 1, 2, 3, 8, 9, 10, 11);
+        out[4 + j] = __builtin_shufflevector(u[j], u[4 + j], 4, 5, 6, 7, 12, 13, 14, 15);
+    }
+}
+
+// The pass for slot-wise groups of the eight lanes: the leaders' pass where a lane has followers,
+// then every threshold where it gave up (glint_multinomial_exact_all_groups' order).
+template <int T>
+__attribute__((always_inline)) static inline void glint_ibl_lanes_pass(GLINT_INOUT(glint_ibl_lanes) d, bool followers, const uint lanes[8], const uint frac[8],
+                                                                    const uint state[8], const uint step[8], const real weight[8],
+                                                                    const real frac_weight[8]) {
+    if (followers &&
+        glint_multinomial_exact_lanes_pass<T>(d.lead_c, d.lead_full, d.has_follower, GLINT_MULTINOMIAL_FOLLOWER_DIGITS, lanes, frac, state, step, weight,
+                                              frac_weight, d.weighted))
+        return;
+    glint_multinomial_exact_lanes_pass<T>(d.c, d.full, d.none, 32, lanes, frac, state, step, weight, frac_weight, d.weighted);
+}
+
+template <int T>
+__attribute__((always_inline)) static inline void glint_ibl_lanes_draw_of(GLINT_INOUT(glint_ibl_lanes) d, bool unbiased) {
+    typedef uint u32x8 __attribute__((vector_size(32)));
+    typedef int i32x8 __attribute__((vector_size(32)));
+    typedef unsigned long long u64x4 __attribute__((vector_size(32)));
+    typedef float f32x8 __attribute__((vector_size(32)));
+    typedef double f64x8 __attribute__((vector_size(64)));
+    typedef typename std::conditional<std::is_same<real, float>::value, f32x8, f64x8>::type realx8;
+    typedef decltype(realx8{} < realx8{}) maskx8;
+    realx8 N, total;
+    i32x8 count;
+    std::memcpy(&N, d.N, sizeof(N)), std::memcpy(&total, d.total, sizeof(total)), std::memcpy(&count, d.count, sizeof(count));
+    // The slots in the pass, as glint_ibl_level_shares tests them (present, and
+    // glint_multinomial_exact_all_applies), and each lane's counts of both.
+    const i32x8 all_ones = i32x8{} - 1;
+    const i32x8 variant = unbiased ? all_ones : i32x8{};
+    realx8 share[12], weight[12];
+    u32x8 hash_x[12], hash_y[12], hash_z[12];
+    std::memcpy(share, d.share, sizeof(share)), std::memcpy(weight, d.weight, sizeof(weight));
+    std::memcpy(hash_x, d.hash_x, sizeof(hash_x)), std::memcpy(hash_y, d.hash_y, sizeof(hash_y)), std::memcpy(hash_z, d.hash_z, sizeof(hash_z));
+    i32x8 batch[12], present_count = {}, batch_count = {};
+    realx8 n[12];
+    for (int s = 0; s < 12; ++s) {
+        n[s] = N * share[s];
+        const i32x8 present = (count > s) & __builtin_convertvector(weight[s] > real(0), i32x8);
+        batch[s] = present & variant &
+                   __builtin_convertvector((n[s] >= GLINT_MULTINOMIAL_EXACT_SPLIT_MIN) & (n[s] <= GLINT_MULTINOMIAL_EXACT_ALL_MAX) & (n[s] * total >= real(1)),
+                                           i32x8);
+        present_count -= present;
+        batch_count -= batch[s];
+    }
+    const i32x8 rest = (batch_count != present_count);  // vertices left to glint_ibl_level_shares' loop
+    d.rest = 0;
+    for (int v = 0; v < 8; ++v) d.rest |= (rest[v] != 0) ? (1 << v) : 0;
+    std::memcpy(d.batched, &batch_count, sizeof(batch_count));
+    u32x8 has_follower;
+    std::memcpy(&has_follower, d.has_follower, sizeof(has_follower));
+    for (int s = 0; s < 12; ++s) {
+        const i32x8 in_pass = batch[s];
+        const u64x4 any = reinterpret_cast<u64x4>(in_pass);
+        if ((any[0] | any[1] | any[2] | any[3]) == 0u) continue;
+        // The root words, PCG3D of the vertex's (glint_multinomial_node_words(hash, 0)).
+        u32x8 x = hash_x[s], y = hash_y[s], z = hash_z[s];
+        glint_pcg3d_vectors(x, y, z);
+        // glint_multinomial_exact_all_lanes and _frac_lanes lane-wise.
+        const realx8 capped = (GLINT_MULTINOMIAL_EXACT_ALL_MAX < n[s]) ? realx8{} + GLINT_MULTINOMIAL_EXACT_ALL_MAX : n[s];
+        const i32x8 whole = in_pass & __builtin_convertvector(capped, i32x8);  // 0 outside the pass
+        const i32x8 two = whole >= 32;
+        const u32x8 pass = reinterpret_cast<u32x8>(in_pass);
+        const u32x8 shift_a = reinterpret_cast<u32x8>(two ? i32x8{} : whole), shift_b = reinterpret_cast<u32x8>(two ? whole - 32 : i32x8{});
+        const u32x8 lanes_a = (reinterpret_cast<u32x8>(two) | (((u32x8{} + 2u) << shift_a) - 1u)) & pass;
+        const u32x8 lanes_b = ((((u32x8{} + 2u) << shift_b) - 1u) & reinterpret_cast<u32x8>(two)) & pass;
+        const u32x8 frac_a = (lanes_b == 0u) ? lanes_a ^ (lanes_a >> 1u) : u32x8{};
+        const u32x8 frac_b = lanes_b ^ (lanes_b >> 1u);
+        const maskx8 in = reinterpret_cast<maskx8>(in_pass);  // lanes outside the pass add nothing (no NaN from their N)
+        const realx8 weight_in = in ? weight[s] : realx8{};
+        const realx8 frac_share = in ? weight_in * (n[s] - __builtin_convertvector(whole, realx8)) : realx8{};
+        const realx8 frac_weight_a = (reinterpret_cast<maskx8>(two)) ? realx8{} : frac_share;
+        const u32x8 step = y | 1u;
+        uint la[8], fa[8], lb[8], fb[8], sa[8], sb[8], st[8];
+        real w[8], fwa[8], fwb[8];
+        std::memcpy(la, &lanes_a, sizeof(la)), std::memcpy(fa, &frac_a, sizeof(fa)), std::memcpy(sa, &x, sizeof(sa)), std::memcpy(st, &step, sizeof(st));
+        std::memcpy(w, &weight_in, sizeof(w)), std::memcpy(fwa, &frac_weight_a, sizeof(fwa));
+        const bool followers = ((reinterpret_cast<u64x4>(has_follower & pass)[0] | reinterpret_cast<u64x4>(has_follower & pass)[1] |
+                                 reinterpret_cast<u64x4>(has_follower & pass)[2] | reinterpret_cast<u64x4>(has_follower & pass)[3]) != 0u);
+        glint_ibl_lanes_pass<T>(d, followers, la, fa, sa, st, w, fwa);
+        const u64x4 any_b = reinterpret_cast<u64x4>(lanes_b);
+        if ((any_b[0] | any_b[1] | any_b[2] | any_b[3]) == 0u) continue;
+        std::memcpy(lb, &lanes_b, sizeof(lb)), std::memcpy(fb, &frac_b, sizeof(fb)), std::memcpy(sb, &z, sizeof(sb));
+        std::memcpy(fwb, &frac_share, sizeof(fwb));
+        glint_ibl_lanes_pass<T>(d, followers, lb, fb, sb, st, w, fwb);
+    }
+}
+
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(GLINT_NO_AVX2)
+__attribute__((noinline, target("avx2"))) static
+#else
+__attribute__((noinline)) static
+#endif
+void glint_ibl_lanes_draw(GLINT_INOUT(glint_ibl_lanes) d, int T, bool unbiased) {
+    switch (T) {
+        case 2: glint_ibl_lanes_draw_of<2>(d, unbiased); break;
+        case 3: glint_ibl_lanes_draw_of<3>(d, unbiased); break;
+        case 4: glint_ibl_lanes_draw_of<4>(d, unbiased); break;
+        case 5: glint_ibl_lanes_draw_of<5>(d, unbiased); break;
+        case 6: glint_ibl_lanes_draw_of<6>(d, unbiased); break;
+        default: glint_ibl_lanes_draw_of<7>(d, unbiased); break;
+    }
+}
+
+// The lanes' pixels' uv and lattice points ([l][lane]; weight 0 in a lane that does not draw), and
+// each point's rotation (glint_lattice_rotation).
+struct glint_ibl_lattice_lanes {
+    real u[8], v[8];
+    real weight[4][8], cos[4][8], sin[4][8];
+    int lod[4][8], level[4][8], bin[4][8];
+};
+
+// glint_footprint_vertices of the lanes' pixels on every lattice point (no log-normal density)
+// into d's slot arrays, from the pixels' uv and lattices: glint_lattice_triangles_x4's operations
+// with the pixels in the lanes instead of the lattice points (the same values bit for bit), and
+// no pixel's vertex arrays written.
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(GLINT_NO_AVX2)
+__attribute__((noinline, target("avx2"))) static
+#else
+__attribute__((noinline)) static
+#endif
+void glint_ibl_lanes_footprint_vertices(GLINT_INOUT(glint_ibl_lanes) d, const glint_ibl_lattice_lanes& lat, uint seed) {
+    typedef uint u32x8 __attribute__((vector_size(32)));
+    typedef int i32x8 __attribute__((vector_size(32)));
+    typedef float f32x8 __attribute__((vector_size(32)));
+    f32x8 ux, uy;
+    std::memcpy(&ux, lat.u, sizeof(ux)), std::memcpy(&uy, lat.v, sizeof(uy));
+    for (int l = 0; l < 4; ++l) {
+        f32x8 c, sn, wl;
+        i32x8 lod, level, bin;
+        std::memcpy(&c, lat.cos[l], sizeof(c)), std::memcpy(&sn, lat.sin[l], sizeof(sn)), std::memcpy(&wl, lat.weight[l], sizeof(wl));
+        std::memcpy(&lod, lat.lod[l], sizeof(lod)), std::memcpy(&level, lat.level[l], sizeof(level)), std::memcpy(&bin, lat.bin[l], sizeof(bin));
+        const f32x8 scale_x = reinterpret_cast<f32x8>((-lod - level + 127) << 23), scale_y = reinterpret_cast<f32x8>((-lod + 127) << 23);
+        const f32x8 qx = (c * ux + sn * uy) * scale_x, qy = (-sn * ux + c * uy) * scale_y;
+        f32x8 sx = qx - qy * real(0.577350269189625764509), sy = qy * real(1.15470053837925152902);
+        const f32x8 lo = f32x8{} + real(-1073741824), hi = f32x8{} + real(1073741824);
+        sx = (sx < lo) ? lo : sx, sy = (sy < lo) ? lo : sy;
+        sx = (hi < sx) ? hi : sx, sy = (hi < sy) ? hi : sy;
+        f32x8 ix = __builtin_convertvector(__builtin_convertvector(sx, i32x8), f32x8), iy = __builtin_convertvector(__builtin_convertvector(sy, i32x8), f32x8);
+        ix = (ix > sx) ? ix - real(1) : ix, iy = (iy > sy) ? iy - real(1) : iy;
+        const f32x8 fx = sx - ix, fy = sy - iy;
+        const i32x8 bx = __builtin_convertvector(ix, i32x8), by = __builtin_convertvector(iy, i32x8);
+        const i32x8 u = (!(fx + fy < real(1))) & 1;
+        const f32x8 uf = __builtin_convertvector(u, f32x8);
+        const f32x8 w[3] = {real(1) - fx - fy, uf - fx, uf - fy};
+        const u32x8 key = (reinterpret_cast<u32x8>(lod + 64) | (reinterpret_cast<u32x8>(level) << 8u) | (reinterpret_cast<u32x8>(bin) << 12u)) ^ seed;
+        u32x8 hx[3] = {reinterpret_cast<u32x8>(bx + u), reinterpret_cast<u32x8>(bx + 1 - u), reinterpret_cast<u32x8>(bx + u)};
+        u32x8 hy[3] = {reinterpret_cast<u32x8>(by + u), reinterpret_cast<u32x8>(by + u), reinterpret_cast<u32x8>(by + 1 - u)};
+        u32x8 hz[3] = {key, key, key};
+        for (int t = 0; t < 3; ++t) {
+            glint_pcg3d_vectors(hx[t], hy[t], hz[t]);
+            const f32x8 wt = reinterpret_cast<f32x8>(reinterpret_cast<u32x8>(w[t]) & 0x7fffffffu);  // glint_abs
+            const auto on = (wt > real(0)) & (wl > real(0));
+            const f32x8 weight = on ? wt : f32x8{}, share = on ? wl : f32x8{};
+            const int slot = 4 * t + l;
+            std::memcpy(d.weight[slot], &weight, sizeof(weight)), std::memcpy(d.share[slot], &share, sizeof(share));
+            std::memcpy(d.hash_x[slot], &hx[t], sizeof(hx[t])), std::memcpy(d.hash_y[slot], &hy[t], sizeof(hy[t])), std::memcpy(d.hash_z[slot], &hz[t], sizeof(hz[t]));
+        }
+    }
+}
+
+// The first part of glint_ibl_sample_pixel for lanes 0 .. n - 1 (the others repeat lane n - 1 and
+// do not draw): glint_ibl_needs_draws into out[v], and where it draws, glint_ibl_lit_levels,
+// glint_multinomial_tree_root, _exact_all_thresholds and the followers of
+// glint_multinomial_exact_all_groups into d, lane-wise with the same operations in the same order
+// (the same values bit for bit). Returns the lanes that draw (bit v).
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(GLINT_NO_AVX2)
+__attribute__((noinline, target("avx2"))) static
+#else
+__attribute__((noinline)) static
+#endif
+int glint_ibl_lanes_setup(GLINT_INOUT(glint_ibl_lanes) d, int n, const glint_grid_pixel* px, GLINT_IN(glint_grid_params) g, GLINT_IN(glint_ibl_levels) lv,
+                          const glint_ibl_indicators* ind, const real* e_d, real d_h, glint_grid_estimate* out) {
+    typedef uint u32x8 __attribute__((vector_size(32)));
+    typedef int i32x8 __attribute__((vector_size(32)));
+    typedef float f32x8 __attribute__((vector_size(32)));
+    typedef double f64x8 __attribute__((vector_size(64)));
+    typedef typename std::conditional<std::is_same<real, float>::value, f32x8, f64x8>::type realx8;
+    typedef decltype(realx8{} < realx8{}) maskx8;
+    const realx8 zero = {}, one = zero + real(1);
+    realx8 e = zero, N = zero;
+    const real* rows[8];
+    for (int v = 0; v < 8; ++v) {
+        const int i = std::min(v, n - 1);
+        e[v] = e_d[i], N[v] = px[i].N, rows[v] = ind[i].w;
+    }
+    realx8 w[8];
+    glint_lanes_transpose8(rows, w);
+    const int K = clamp(lv.count, 3, GLINT_IBL_MAX_LEVELS);
+    // glint_ibl_probabilities
+    const real area = max(d_h, real(1));
+    realx8 p[8], total = zero;
+    for (int k = 0; k < 8; ++k) {
+        realx8 x = e * w[k] / area;
+        x = (x < zero) ? zero : x;
+        x = (one < x) ? one : x;
+        p[k] = (k < K) ? x : zero;
+        total += p[k];
+    }
+    const realx8 scale = (total > one) ? one / total : one;
+    for (int k = 0; k < 8; ++k) p[k] *= scale;
+    // glint_ibl_needs_draws
+    realx8 expected = zero, second = zero;
+    for (int k = 1; k < 8; ++k) {
+        const real L = (k < K) ? lv.radiance[k] : real(0);
+        expected += L * p[k];
+        second += L * L * p[k];
+    }
+    const realx8 var_bound = second / ((N < real(1e-30)) ? zero + real(1e-30) : N) + glint_density_variance_factor(g) * expected * expected;
+    const maskx8 bright = expected > real(0);
+    const maskx8 smooth = bright & (var_bound <= g.smooth_tolerance * g.smooth_tolerance * expected * expected);
+    const realx8 value = smooth ? expected : zero;
+    const maskx8 draws = bright & ~smooth & (N > real(1e-30));  // no microfacets: glint_ibl_level_shares' shares and the value are 0
+    int drawing = 0;
+    for (int v = 0; v < n; ++v) {
+        out[v].value = value[v], out[v].expected = expected[v], out[v].draws = 0;
+        drawing |= (draws[v] != 0) ? 1 << v : 0;
+    }
+    // glint_ibl_lit_levels, then glint_multinomial_tree_root
+    const int T = clamp(K - 1, 2, 8);
+    realx8 t[8], t_total = zero;
+    for (int k = 0; k < 8; ++k) {
+        const realx8 lit = (k < 7 && k + 1 < K) ? p[k + 1] : zero;
+        std::memcpy(d.lit[k], &lit, sizeof(lit));
+        const realx8 x = (lit < zero) ? zero : lit;
+        t[k] = (k < T) ? x : zero;
+        t_total += t[k];
+    }
+    const realx8 t_scale = (t_total > one) ? one / t_total : one;
+    realx8 root_total = t_total * t_scale;
+    root_total = (one < root_total) ? one : root_total;
+    std::memcpy(d.total, &root_total, sizeof(root_total));
+    // glint_multinomial_exact_all_thresholds, and the followers
+    u32x8 sum = {}, reached = {}, has_follower = {}, c_before = {}, full_before = {}, lead_c = {}, lead_full = {};
+    const realx8 two32 = zero + real(4294967296.0), two31 = zero + real(2147483648.0);
+    for (int k = 0; k < 8; ++k) {
+        const realx8 scaled = (k < T) ? t[k] * t_scale * real(4294967296.0) : zero;  // p_k 2^32, exact in float
+        const u32x8 whole_word = reinterpret_cast<u32x8>(__builtin_convertvector(scaled >= two32, i32x8));
+        const u32x8 no_add = whole_word | reinterpret_cast<u32x8>(__builtin_convertvector(!(scaled >= zero), i32x8));
+        // uint(scaled) for scaled in [0, 2^32): from 2^31 on, as an int after subtracting 2^31 (exact)
+        const maskx8 high = scaled >= two31;
+        const u32x8 as_uint = reinterpret_cast<u32x8>(__builtin_convertvector(high ? scaled - two31 : scaled, i32x8)) +
+                              (reinterpret_cast<u32x8>(__builtin_convertvector(high, i32x8)) & 0x80000000u);
+        const u32x8 next = sum + (no_add ? u32x8{} : as_uint);
+        reached |= whole_word | (next < sum);
+        sum = next;
+        const u32x8 follower = (k > 0 && k < T) ? ((((c_before ^ sum) >> uint(32 - GLINT_MULTINOMIAL_FOLLOWER_DIGITS)) == 0u) & ~(reached | full_before))
+                                                : u32x8{};
+        lead_c = follower ? lead_c : sum;
+        lead_full = follower ? lead_full : reached;
+        has_follower |= follower;
+        std::memcpy(d.c[k], &sum, sizeof(sum)), std::memcpy(d.full[k], &reached, sizeof(reached));
+        std::memcpy(d.lead_c[k], &lead_c, sizeof(lead_c)), std::memcpy(d.lead_full[k], &lead_full, sizeof(lead_full));
+        c_before = sum, full_before = reached;
+    }
+    std::memcpy(d.has_follower, &has_follower, sizeof(has_follower));
+    std::memcpy(d.N, &N, sizeof(N));
+    return drawing;
+}
+
+// out[i] = glint_ibl_sample_pixel(px[i], g, lv, ind[i], e_d[i], d_h) for i < count, to float
+// rounding of the value (the draws and the expectation exactly): eight pixels at a time where the
+// CPU has AVX2 (float), one at a time otherwise.
+GLINT_FN void glint_ibl_sample_pixels(int count, glint_grid_pixel* px, GLINT_IN(glint_grid_params) g, GLINT_IN(glint_ibl_levels) lv,
+                                      const glint_ibl_indicators* ind, const real* e_d, real d_h, glint_grid_estimate* out) {
+    if constexpr (!std::is_same<real, float>::value) {
+        for (int i = 0; i < count; ++i) out[i] = glint_ibl_sample_pixel(px[i], g, lv, ind[i], e_d[i], d_h);
+    } else {
+    const int K = clamp(lv.count, 3, GLINT_IBL_MAX_LEVELS);
+    for (int first = 0; first < count; first += 8) {
+        const int n = std::min(count - first, 8);
+        // The lanes draw where the CPU has AVX2, the density has no log-normal factor and every
+        // pixel keeps its four lattice points; else each pixel draws alone.
+        bool lattice_lanes = glint_cpu_avx2() && !(g.density_sigma > real(0));
+        for (int i = first; i < first + n; ++i) lattice_lanes = lattice_lanes && !(px[i].lattice_u >= real(0));
+        if (!lattice_lanes) {
+            for (int i = first; i < first + n; ++i) out[i] = glint_ibl_sample_pixel(px[i], g, lv, ind[i], e_d[i], d_h);
+            continue;
+        }
+        // Not zeroed whole (a fifth of the set-up's instructions): the outputs and flags here, the
+        // rest where the lanes fill them.
+        glint_ibl_lanes d;
+        std::memset(d.weighted, 0, sizeof(d.weighted)), std::memset(d.none, 0, sizeof(d.none));
+        const int drawing = glint_ibl_lanes_setup(d, n, px + first, g, lv, ind + first, e_d + first, d_h, out + first);
+        {
+            static const vec2* const rotation = glint_lattice_rotation_table();
+            glint_ibl_lattice_lanes lat;
+            for (int v = 0; v < 8; ++v) {
+                const glint_grid_pixel& p = px[first + std::min(v, n - 1)];
+                const glint_lattice l = glint_footprint_lattice(p.f, g.lod_scale);
+                const bool draws = ((drawing >> v) & 1) != 0;
+                d.count[v] = draws ? 12 : 0;
+                lat.u[v] = p.uv.x, lat.v[v] = p.uv.y;
+                for (int k = 0; k < 4; ++k) {
+                    const vec2 r = rotation[(l.bin[k] << (GLINT_MAX_RATIO_LEVEL - l.level[k])) & 31];
+                    lat.weight[k][v] = draws ? l.weight[k] : real(0), lat.cos[k][v] = r.x, lat.sin[k][v] = r.y;
+                    lat.lod[k][v] = l.lod[k], lat.level[k][v] = l.level[k], lat.bin[k][v] = l.bin[k];
+                }
+            }
+            glint_ibl_lanes_footprint_vertices(d, lat, g.seed);
+        }
+        if (drawing == 0) continue;
+        glint_ibl_lanes_draw(d, K - 1, g.variant == GLINT_BINOMIAL_UNBIASED);
+        for (int v = 0; v < n; ++v) {
+            if (((drawing >> v) & 1) == 0) continue;
+            glint_grid_estimate& o = out[first + v];
+            glint_ibl_shares sh;
+            if (((d.rest >> v) & 1) != 0) {  // the loop draws the other vertices, after the pass's
+                glint_grid_pixel_vertices(px[first + v], g);  // where the lanes computed them, the same vertices
+                glint_ibl_predrawn pre;
+                glint_multinomial_probabilities lit;
+                for (int k = 0; k < 8; ++k) pre.weighted[k] = d.weighted[k][v], lit.p[k] = d.lit[k][v];
+                sh = glint_ibl_level_shares(px[first + v], g, K, lit, &pre);
+            } else {
+                sh.share[0] = real(0);
+                for (int k = 0; k < 7; ++k) sh.share[k + 1] = d.weighted[k][v] / d.N[v];
+                sh.draws = d.batched[v] * (K - 1);
+            }
+            o.value = glint_ibl_value(lv, sh);
+            o.draws = sh.draws;
+        }
+    }
+    }
+}
+#endif
 
 // ---------------------------------------------------------------------------------------------
 // Texture filtering as OpenGL does it (GL_LINEAR): texel centres at (i + 1/2) / size; u repeats

@@ -672,6 +672,81 @@ GLINT_FN void glint_multinomial_exact_all_weighted(const glint_multinomial_tree&
         else glint_multinomial_exact_all_groups_x4(c, t.K, lanes + j, frac + j, state + j, step + j, group_weight + j, frac_weight + j, weighted);
     }
 }
+
+// C++ only: the pass of glint_multinomial_exact_all_groups_pass for eight lane groups that each
+// have their own thresholds: group v compares with c[k][v] (full[k][v] all ones where c_k is
+// full), so that eight pixels, each with its own probabilities, draw one vertex each in one pass
+// (glint_ibl_sample_pixels, ibl.glsl). Adds lane-wise, weighted[k][v] += group v's weighted count
+// in bin k; where a group of stop_lanes is still undecided after stop_digit digits, it gives up and
+// returns false before it adds anything. A group whose follower thresholds (those that share their
+// first GLINT_MULTINOMIAL_FOLLOWER_DIGITS digits with the one before) are set to its last leader's
+// value has its followers' bins empty and every other bin as with the leaders alone, the pass that
+// glint_multinomial_exact_all_groups runs first: the same counts, by the argument given there.
+template <int T>
+__attribute__((always_inline)) static inline bool glint_multinomial_exact_lanes_pass(const uint (&c)[8][8], const uint (&full)[8][8], const uint stop_lanes[8],
+                                                                                    int stop_digit, const uint lanes_in[8], const uint frac_in[8],
+                                                                                    const uint state_in[8], const uint step_in[8],
+                                                                                    const real weight_in[8], const real frac_weight_in[8],
+                                                                                    real (&weighted)[8][8]) {
+    typedef uint u32x8 __attribute__((vector_size(32)));
+    typedef int i32x8 __attribute__((vector_size(32)));
+    typedef unsigned long long u64x4 __attribute__((vector_size(32)));
+    typedef float f32x8 __attribute__((vector_size(32)));
+    typedef double f64x8 __attribute__((vector_size(64)));
+    typedef typename std::conditional<std::is_same<real, float>::value, f32x8, f64x8>::type realx8;
+    u32x8 lanes, frac, state, step, stop;
+    realx8 weight, frac_weight;
+    std::memcpy(&lanes, lanes_in, sizeof(lanes)), std::memcpy(&frac, frac_in, sizeof(frac));
+    std::memcpy(&state, state_in, sizeof(state)), std::memcpy(&step, step_in, sizeof(step));
+    std::memcpy(&stop, stop_lanes, sizeof(stop));
+    std::memcpy(&weight, weight_in, sizeof(weight)), std::memcpy(&frac_weight, frac_weight_in, sizeof(frac_weight));
+    u32x8 threshold[8], open[8], below[8];  // the first T are used
+    for (int k = 0; k < T; ++k) {
+        u32x8 f;
+        std::memcpy(&threshold[k], c[k], sizeof(threshold[k])), std::memcpy(&f, full[k], sizeof(f));
+        open[k] = lanes & ~f;
+        below[k] = lanes & f;
+    }
+    // Two digits between the tests for open trials, as glint_multinomial_exact_all_groups_pass.
+    for (int digit = 0; digit < 32; digit += 2) {
+        u32x8 any = open[0];
+        for (int k = 1; k < T; ++k) any |= open[k];
+        u64x4 wide = reinterpret_cast<u64x4>(any);
+        if ((wide[0] | wide[1] | wide[2] | wide[3]) == 0u) break;
+        if (digit == stop_digit) {
+            u64x4 stopped = reinterpret_cast<u64x4>(any & stop);
+            if ((stopped[0] | stopped[1] | stopped[2] | stopped[3]) != 0u) return false;
+        }
+        for (int twice = 0; twice < 2; ++twice) {
+            u32x8 word = state;
+            glint_hash_u32_vector(word);
+            state += step;
+            for (int k = 0; k < T; ++k) {
+                u32x8 c_digit = (u32x8{} + 0u) - (threshold[k] >> 31u);
+                threshold[k] <<= 1u;
+                u32x8 decided = open[k] & (word ^ c_digit);
+                below[k] |= decided & c_digit;
+                open[k] &= ~decided;
+            }
+        }
+    }
+    u32x8 previous = {};
+    for (int k = 0; k < T; ++k) {
+        u32x8 in_bin = below[k] & ~previous;
+        previous = below[k];
+        u32x8 x = in_bin & ~frac;  // glint_bit_count lane-wise
+        x = x - ((x >> 1u) & 0x55555555u);
+        x = (x & 0x33333333u) + ((x >> 2u) & 0x33333333u);
+        x = (x + (x >> 4u)) & 0x0f0f0f0fu;
+        x = (x * 0x01010101u) >> 24u;
+        i32x8 frac_in_bin = -((in_bin & frac) != 0u);
+        realx8 sum;
+        std::memcpy(&sum, weighted[k], sizeof(sum));
+        sum += __builtin_convertvector(reinterpret_cast<i32x8>(x), realx8) * weight + __builtin_convertvector(frac_in_bin, realx8) * frac_weight;
+        std::memcpy(weighted[k], &sum, sizeof(sum));
+    }
+    return true;
+}
 #endif
 
 // Where the mean-preserving draw takes glint_multinomial_exact_all: N from 4 to 63 and N total >= 1

@@ -118,6 +118,20 @@ void for_each_sphere_pixel(F&& fn) {
         }
 }
 
+// Runs frame(f) for f < frames and prints the frames' mean and least wall time.
+template <class F>
+void time_frames(const char* mode, int frames, F&& frame) {
+    const auto start = std::chrono::steady_clock::now();
+    double least = 1e30;
+    for (int f = 0; f < frames; ++f) {
+        const auto frame_start = std::chrono::steady_clock::now();
+        frame(f);
+        least = std::min(least, std::chrono::duration<double>(std::chrono::steady_clock::now() - frame_start).count());
+    }
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    std::printf("%s: %.0f us a frame (mean of %d; the least %.0f us)\n", mode, 1e6 * seconds / std::max(frames, 1), frames, 1e6 * least);
+}
+
 // One lobe-forest query, out of line for callgrind's --toggle-collect.
 __attribute__((noinline)) float lobe_forest_eval(const glint_bench::forest& f, const glint_bench::query& q) { return f.eval(q.fp, q.s); }
 
@@ -141,11 +155,7 @@ int main(int argc, char** argv) {
         const bool stochastic = !std::strcmp(mode, "ibl-stochastic");
         const auto env = sunset_environment(std::atoi(argv[2]));
         const float sa = 0.35f, dh = env.total_area(sa * sa);
-        const auto start = std::chrono::steady_clock::now();
-        const int frames = std::atoi(argv[3]);
-        double least = 1e30;
-        for (int frame = 0; frame < frames; ++frame) {
-            const auto frame_start = std::chrono::steady_clock::now();
+        time_frames(mode, std::atoi(argv[3]), [&](int frame) {
             for_each_sphere_pixel([&](int x, int y, const glm::vec3& n) {
                 const auto s = env.lookup(glm::reflect(glm::vec3(0, 0, -1), n), sa);
                 glint::grid_params<float> g;
@@ -156,19 +166,12 @@ int main(int argc, char** argv) {
                 const auto e = glint_ibl_estimate(uv, g, env, s, env.visible_area(n.z, sa), dh, lattice_u);
                 sum += static_cast<double>(glint::modulation(e));
             });
-            least = std::min(least, std::chrono::duration<double>(std::chrono::steady_clock::now() - frame_start).count());
-        }
-        const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-        std::printf("%s: %.0f us a frame (mean of %d; the least %.0f us)\n", mode, 1e6 * seconds / std::max(frames, 1), frames, 1e6 * least);
+        });
     } else if (argc == 4 && (!std::strcmp(mode, "ibl-rows") || !std::strcmp(mode, "ibl-rows-stochastic"))) {
         const bool stochastic = !std::strcmp(mode, "ibl-rows-stochastic");
         const auto env = sunset_environment(std::atoi(argv[2]));
         const float sa = 0.35f, dh = env.total_area(sa * sa);
-        const auto start = std::chrono::steady_clock::now();
-        const int frames = std::atoi(argv[3]);
-        double least = 1e30;
-        for (int frame = 0; frame < frames; ++frame) {
-            const auto frame_start = std::chrono::steady_clock::now();
+        time_frames(mode, std::atoi(argv[3]), [&](int frame) {
             glint::grid_params<float> g;
             g.log_density = 4.0f;
             g.seed = static_cast<std::uint32_t>(frame);
@@ -189,10 +192,7 @@ int main(int argc, char** argv) {
                 glint_ibl_estimate_row(count, uv, g, env, ind, e_d, dh, lattice_u, e);
                 for (int i = 0; i < count; ++i) sum += static_cast<double>(glint::modulation(e[i]));
             }
-            least = std::min(least, std::chrono::duration<double>(std::chrono::steady_clock::now() - frame_start).count());
-        }
-        const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-        std::printf("%s: %.0f us a frame (mean of %d; the least %.0f us)\n", mode, 1e6 * seconds / std::max(frames, 1), frames, 1e6 * least);
+        });
     } else if (argc == 4 && (!std::strcmp(mode, "ibl-lookup") || !std::strcmp(mode, "ibl-radiance"))) {
         const bool all = !std::strcmp(mode, "ibl-lookup");
         const auto env = sunset_environment(std::atoi(argv[2]));

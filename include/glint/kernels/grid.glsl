@@ -824,8 +824,7 @@ GLINT_FN glint_grid_estimates glint_grid_sample_lights(vec2 uv, vec2 duvdx, vec2
 // 16 point lights through the list): 91.2M instructions with each light through
 // glint_grid_sample_pixel, 54.3M in batches, the same sum (docs/grid.md times it).
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(GLINT_NO_AVX2)
-typedef float glint_f32x8 __attribute__((vector_size(32)));
-typedef int glint_i32x8 __attribute__((vector_size(32)));
+// (glint_f32x8 and glint_i32x8: multinomial.glsl's eight-lane types.)
 // glm's clamp, min(max(x, lo), hi) with max(x, y) = (x < y) ? y : x and min(x, y) = (y < x) ? y : x:
 // the same selects lane-wise, NaN included.
 __attribute__((always_inline, target("avx2"))) static inline glint_f32x8 glint_clamp_x8(glint_f32x8 x, float lo, float hi) {

@@ -348,12 +348,10 @@ __attribute__((always_inline)) static inline void glint_ibl_lanes_pass(GLINT_INO
 
 template <int T>
 __attribute__((always_inline)) static inline void glint_ibl_lanes_draw_of(GLINT_INOUT(glint_ibl_lanes) d, bool unbiased) {
-    typedef uint u32x8 __attribute__((vector_size(32)));
-    typedef int i32x8 __attribute__((vector_size(32)));
-    typedef unsigned long long u64x4 __attribute__((vector_size(32)));
-    typedef float f32x8 __attribute__((vector_size(32)));
-    typedef double f64x8 __attribute__((vector_size(64)));
-    typedef typename std::conditional<std::is_same<real, float>::value, f32x8, f64x8>::type realx8;
+    typedef glint_u32x8 u32x8;
+    typedef glint_i32x8 i32x8;
+    typedef glint_u64x4 u64x4;
+    typedef glint_realx8 realx8;
     typedef decltype(realx8{} < realx8{}) maskx8;
     realx8 N, total;
     i32x8 count;
@@ -454,9 +452,9 @@ __attribute__((noinline, target("avx2"))) static
 __attribute__((noinline)) static
 #endif
 void glint_ibl_lanes_footprint_vertices(GLINT_INOUT(glint_ibl_lanes) d, const glint_ibl_lattice_lanes& lat, uint seed) {
-    typedef uint u32x8 __attribute__((vector_size(32)));
-    typedef int i32x8 __attribute__((vector_size(32)));
-    typedef float f32x8 __attribute__((vector_size(32)));
+    typedef glint_u32x8 u32x8;
+    typedef glint_i32x8 i32x8;
+    typedef glint_f32x8 f32x8;
     f32x8 ux, uy;
     std::memcpy(&ux, lat.u, sizeof(ux)), std::memcpy(&uy, lat.v, sizeof(uy));
     for (int l = 0; l < 4; ++l) {
@@ -505,11 +503,9 @@ __attribute__((noinline)) static
 #endif
 int glint_ibl_lanes_setup(GLINT_INOUT(glint_ibl_lanes) d, int n, const glint_grid_pixel* px, GLINT_IN(glint_grid_params) g, GLINT_IN(glint_ibl_levels) lv,
                           const glint_ibl_indicators* ind, const real* e_d, real d_h, glint_grid_estimate* out) {
-    typedef uint u32x8 __attribute__((vector_size(32)));
-    typedef int i32x8 __attribute__((vector_size(32)));
-    typedef float f32x8 __attribute__((vector_size(32)));
-    typedef double f64x8 __attribute__((vector_size(64)));
-    typedef typename std::conditional<std::is_same<real, float>::value, f32x8, f64x8>::type realx8;
+    typedef glint_u32x8 u32x8;
+    typedef glint_i32x8 i32x8;
+    typedef glint_realx8 realx8;
     typedef decltype(realx8{} < realx8{}) maskx8;
     const realx8 zero = {}, one = zero + real(1);
     realx8 e = zero, N = zero;

@@ -682,18 +682,25 @@ GLINT_FN void glint_multinomial_exact_all_weighted(const glint_multinomial_tree&
 // first GLINT_MULTINOMIAL_FOLLOWER_DIGITS digits with the one before) are set to its last leader's
 // value has its followers' bins empty and every other bin as with the leaders alone, the pass that
 // glint_multinomial_exact_all_groups runs first: the same counts, by the argument given there.
+// Eight lanes in AVX2's registers (C++ only): the lane types of the passes below and of ibl.glsl's
+// eight pixels at a time.
+typedef uint glint_u32x8 __attribute__((vector_size(32)));
+typedef int glint_i32x8 __attribute__((vector_size(32)));
+typedef unsigned long long glint_u64x4 __attribute__((vector_size(32)));
+typedef float glint_f32x8 __attribute__((vector_size(32)));
+typedef double glint_f64x8 __attribute__((vector_size(64)));
+typedef typename std::conditional<std::is_same<real, float>::value, glint_f32x8, glint_f64x8>::type glint_realx8;
+
 template <int T>
 __attribute__((always_inline)) static inline bool glint_multinomial_exact_lanes_pass(const uint (&c)[8][8], const uint (&full)[8][8], const uint stop_lanes[8],
                                                                                     int stop_digit, const uint lanes_in[8], const uint frac_in[8],
                                                                                     const uint state_in[8], const uint step_in[8],
                                                                                     const real weight_in[8], const real frac_weight_in[8],
                                                                                     real (&weighted)[8][8]) {
-    typedef uint u32x8 __attribute__((vector_size(32)));
-    typedef int i32x8 __attribute__((vector_size(32)));
-    typedef unsigned long long u64x4 __attribute__((vector_size(32)));
-    typedef float f32x8 __attribute__((vector_size(32)));
-    typedef double f64x8 __attribute__((vector_size(64)));
-    typedef typename std::conditional<std::is_same<real, float>::value, f32x8, f64x8>::type realx8;
+    typedef glint_u32x8 u32x8;
+    typedef glint_i32x8 i32x8;
+    typedef glint_u64x4 u64x4;
+    typedef glint_realx8 realx8;
     u32x8 lanes, frac, state, step, stop;
     realx8 weight, frac_weight;
     std::memcpy(&lanes, lanes_in, sizeof(lanes)), std::memcpy(&frac, frac_in, sizeof(frac));

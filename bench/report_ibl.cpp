@@ -115,6 +115,7 @@ section ibl_section(double min_time) {
                 }
                 pixel[count++] = glint::grid_pixel_setup(uv, glm::vec2(1, 0), glm::vec2(0, 1), g);
             }
+            if (count == 0) continue;  // smooth, or one lattice point a pixel
             glint::ibl_sample_pixels(count, pixel, g, env->levels(), ind, e_d, dh, est);
             for (int i = 0; i < count; ++i) acc += shade[i] * glint::modulation(est[i]);
         }

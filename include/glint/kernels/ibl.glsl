@@ -298,7 +298,6 @@ struct glint_ibl_lanes {
     uint lead_c[8][8];     // the same with each follower set to its last leader
     uint lead_full[8][8];
     uint has_follower[8];  // all ones in the lanes with a follower
-    uint none[8];          // zeros: no lane stops
     real lit[8][8];        // [k][lane]: the lit levels' probabilities (glint_ibl_lit_levels)
     real N[8];
     real total[8];         // the tree root's total
@@ -343,7 +342,7 @@ __attribute__((always_inline)) static inline void glint_ibl_lanes_pass(GLINT_INO
         glint_multinomial_exact_lanes_pass<T>(d.lead_c, d.lead_full, d.has_follower, GLINT_MULTINOMIAL_FOLLOWER_DIGITS, lanes, frac, state, step, weight,
                                               frac_weight, d.weighted))
         return;
-    glint_multinomial_exact_lanes_pass<T>(d.c, d.full, d.none, 32, lanes, frac, state, step, weight, frac_weight, d.weighted);
+    glint_multinomial_exact_lanes_pass<T>(d.c, d.full, d.has_follower, 32, lanes, frac, state, step, weight, frac_weight, d.weighted);  // 32: never stops
 }
 
 template <int T>
@@ -607,10 +606,10 @@ GLINT_FN void glint_ibl_sample_pixels(int count, glint_grid_pixel* px, GLINT_IN(
             for (int i = first; i < first + n; ++i) out[i] = glint_ibl_sample_pixel(px[i], g, lv, ind[i], e_d[i], d_h);
             continue;
         }
-        // Not zeroed whole (a fifth of the set-up's instructions): the outputs and flags here, the
-        // rest where the lanes fill them.
+        // Not zeroed whole (a fifth of the set-up's instructions): the sums here, the rest where the
+        // lanes fill them.
         glint_ibl_lanes d;
-        std::memset(d.weighted, 0, sizeof(d.weighted)), std::memset(d.none, 0, sizeof(d.none));
+        std::memset(d.weighted, 0, sizeof(d.weighted));
         const int drawing = glint_ibl_lanes_setup(d, n, px + first, g, lv, ind + first, e_d + first, d_h, out + first);
         {
             static const vec2* const rotation = glint_lattice_rotation_table();

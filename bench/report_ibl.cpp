@@ -108,14 +108,10 @@ section ibl_section(double min_time) {
                 ind[count] = s.indicators;
                 e_d[count] = env->visible_area(cos_o, sa);
                 const glm::vec2 uv(static_cast<float>(x), static_cast<float>(y));
-                if (mode == 2) {  // one lattice point: ibl_sample_pixels draws such pixels one at a time, as here
-                    auto one = glint::grid_pixel_setup(uv, glm::vec2(1, 0), glm::vec2(0, 1), g, glint_examples::pixel_lattice_u(true, x, y, g.seed));
-                    acc += shade[count] * glint::modulation(glint::ibl_sample(one, g, env->levels(), s.indicators, e_d[count], dh));
-                    continue;
-                }
-                pixel[count++] = glint::grid_pixel_setup(uv, glm::vec2(1, 0), glm::vec2(0, 1), g);
+                const float lattice_u = glint_examples::pixel_lattice_u(mode == 2, x, y, g.seed);  // mode 2: one lattice point
+                pixel[count++] = glint::grid_pixel_setup(uv, glm::vec2(1, 0), glm::vec2(0, 1), g, lattice_u);
             }
-            if (count == 0) continue;  // smooth, or one lattice point a pixel
+            if (count == 0) continue;  // smooth
             glint::ibl_sample_pixels(count, pixel, g, env->levels(), ind, e_d, dh, est);
             for (int i = 0; i < count; ++i) acc += shade[i] * glint::modulation(est[i]);
         }

@@ -171,6 +171,25 @@ TEST_CASE("log1p and expm1: GLSL within the tolerance table of C++ and of the ex
     CHECK(worst_e <= EXPM1_GLSL_MAX_ULP_EXACT);
 }
 
+TEST_CASE("log2: GLSL bit-identical to C++ and within the C++ bound of the exact value") {
+    // Every 9973rd positive normal float pattern (about 2.1e5), and the clamped ends.
+    std::vector<float> x;
+    for (std::uint32_t b = 0x00800000u; b < 0x7f800000u; b += 9973u) x.push_back(glint_test::float_from_bits(b));
+    for (const float e : {0.0f, -1.0f, 1.0f, 3.4028235e38f}) x.push_back(e);
+    const auto g = from_words<float>(glint_test::map_floats({"core.glsl"}, "float", "glint_log2(x)", x));
+    using k = glint::detail::glsl::kernels<float>;
+    std::vector<float> c;
+    double worst = 0;
+    for (std::size_t i = 0; i < x.size(); ++i) {
+        c.push_back(k::glint_log2(x[i]));
+        if (x[i] > 0) worst = std::max(worst, glint_test::ulp_error(g[i], static_cast<double>(log2l(x[i]))));
+    }
+    ulp_stats st = compare(g, c);
+    MESSAGE("log2 GLSL vs C++: " << st.count << " inputs, rate " << st.rate() << ", max " << st.max << " ulp; vs exact " << worst << " ulp");
+    CHECK(st.max <= LOG2_GLSL_MAX_ULP_DISTANCE);
+    CHECK(worst <= LOG2_GLSL_MAX_ULP_EXACT);
+}
+
 // atan2 over a spiral of directions (every octant, magnitudes 2^-20 to 2^20, and the axes) and
 // acos over [-1, 1] with the floats next to +-1 (where 1 - x^2 matters): GLSL against C++, and both
 // against the exact value (long double).

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <map>
 #include <memory>
 #include <string>
@@ -351,12 +352,69 @@ TEST_CASE("ibl: C++'s level shares, drawn four or eight lane groups at a time, e
     CHECK(differ == 0);
 }
 
+TEST_CASE("ibl: the lanes' lattice (glint_ibl_lanes_lattice) is glint_footprint_lattice's bit for bit, every triangle case and prism split") {
+    // 2^17 footprints in 16384 passes of eight: log2 of the minor axis uniform in [-30, 30] (past
+    // both LOD clamps), aspect ratios 1 to 2^5 (past the clamp at 16), angles over [0, pi), and
+    // the edges: minor axes at powers of two (tl = 0), ratios at powers of two (tr = 0), angles at
+    // bin boundaries, minor 0, and major 0. Every lane's weights (as bits), lods, levels and bins and
+    // its rotations must equal the scalar function's and glint_lattice_rotation's, and the lanes
+    // outside `drawing` must have weight 0. Coverage: the ratio levels r0 and the prism's three
+    // splits are counted, each must occur.
+    long mismatches = 0, splits[3] = {0, 0, 0}, levels[4] = {0, 0, 0, 0};
+    const float lod_scale = 1.5f;
+    for (std::uint32_t pass = 0; pass < 16384; ++pass) {
+        glint::detail::glsl::kernels<float>::glint_footprint f[8];
+        K::glint_f32x8 major, minor, angle;
+        for (int v = 0; v < 8; ++v) {
+            const glm::uvec3 h = glint::pcg3d(glm::uvec3(pass, static_cast<std::uint32_t>(v), 77u));
+            const float a = glint::unit_from_bits<float>(h.x), b = glint::unit_from_bits<float>(h.y), c = glint::unit_from_bits<float>(h.z);
+            float mn = std::exp2(-30.0f + 60.0f * a), ratio = std::exp2(5.0f * b), ang = 3.14159265f * c;
+            switch (pass % 8) {
+                case 1: mn = std::exp2(std::floor(-10.0f + 20.0f * a)); break;  // tl = 0 (up to lod_scale's bits)
+                case 2: ratio = std::exp2(std::floor(5.0f * b)); break;
+                case 3: ang = 3.14159265358979f * std::floor(32.0f * c) / 32.0f; break;
+                case 4: mn = (v % 2) ? 0.0f : mn; break;
+                case 5: ratio = (v % 3) ? ratio : 0.0f; break;
+                default: break;
+            }
+            f[v].minor = mn, f[v].major = mn * ratio, f[v].angle = ang;
+            if (pass % 8 == 4 && v % 2) f[v].major = std::exp2(-30.0f + 60.0f * a);
+            major[v] = f[v].major, minor[v] = f[v].minor, angle[v] = f[v].angle;
+        }
+        const int drawing = static_cast<int>(pass * 2654435761u >> 24);
+        K::glint_ibl_lattice_lanes lat;
+        K::glint_ibl_lanes_lattice(major, minor, angle, lod_scale, drawing, lat);
+        for (int v = 0; v < 8; ++v) {
+            const auto l = K::glint_footprint_lattice(f[v], lod_scale);
+            const bool draws = ((drawing >> v) & 1) != 0;
+            bool same = true;
+            for (int k = 0; k < 4; ++k) {
+                const float w = draws ? l.weight[k] : 0.0f;
+                same = same && std::memcmp(&w, &lat.weight[k][v], sizeof(w)) == 0 && l.lod[k] == lat.lod[k][v] && l.level[k] == lat.level[k][v] &&
+                       l.bin[k] == lat.bin[k][v];
+                const glm::vec2 r = K::glint_lattice_rotation(l.level[k], l.bin[k]);
+                same = same && r.x == lat.cos[k][v] && r.y == lat.sin[k][v];
+            }
+            mismatches += !same;
+            // The split: the fourth point repeats v1 (L0 + 1 at index 0 false), v2 or v3.
+            const int split = (l.lod[0] != l.lod[3]) ? 0 : (l.lod[1] != l.lod[3]) ? 1 : 2;
+            ++splits[split];
+            ++levels[std::min(std::max(l.level[0], 0), 3)];
+        }
+    }
+    MESSAGE("2^17 footprints: " << mismatches << " differ; splits " << splits[0] << " / " << splits[1] << " / " << splits[2] << "; lowest level 0 to 3: "
+                                << levels[0] << " / " << levels[1] << " / " << levels[2] << " / " << levels[3]);
+    CHECK(mismatches == 0);
+    for (long c : splits) CHECK(c > 1000);
+    for (long c : levels) CHECK(c > 1000);
+}
+
 TEST_CASE("ibl: ibl_sample_pixels (eight pixels a pass in AVX2 lanes) gives ibl_sample's draws and expectation exactly, its value to float rounding") {
     // Rows of pixels with their own directions (so each lane of a pass has its own thresholds),
-    // footprints from 0.3 to 3 texels and densities from e^0 to e^6: vertices in the pass, with one
-    // and two lane groups, and pixels that the pass leaves to ibl_sample whole (a vertex with N
-    // below 4 or above 63, one lattice point, a log-normal density, a published variant), pixels
-    // the smooth gate returns, and rows of 1 to 37 pixels. The counts are the same vertex by
+    // footprints of area 0.09 to 9 texels, anisotropic at every angle, and densities from e^0 to
+    // e^6: vertices in the pass, with one and two lane groups, and pixels that the pass leaves to
+    // ibl_sample whole (a vertex with N below 4 or above 63, one lattice point, a log-normal
+    // density, a published variant), pixels the smooth gate returns, and rows of 1 to 37 pixels. The counts are the same vertex by
     // vertex; the batch adds each pass's l_t M_k lane-wise in slot order, ibl_sample across its
     // groups. Every term is non-negative, so each share's sum (at most 24 terms) is within
     // 24 2^-24 of its terms' total in either order, and the value, sum_k L_k share_k, within
@@ -390,7 +448,11 @@ TEST_CASE("ibl: ibl_sample_pixels (eight pixels a pass in AVX2 lanes) gives ibl_
                         const glm::vec2 uv(glint::unit_from_bits<float>(h.x) * 300.0f, glint::unit_from_bits<float>(h.y) * 300.0f);
                         const float size = 0.3f + 2.7f * glint::unit_from_bits<float>(h.z);
                         const float lattice_u = (setting == 4 && i % 2 == 0) ? glint::unit_from_bits<float>(h.x ^ h.y) : -1.0f;
-                        px[i] = glint::grid_pixel_setup(uv, glm::vec2(size, 0.3f * size), glm::vec2(-0.2f * size, size), g, lattice_u);
+                        // At every angle, aspect ratios 1 to 24 (every lattice triangle case), area size^2.
+                        const float turn = 6.2831853f * glint::unit_from_bits<float>(h.x ^ h.z);
+                        const float stretch = std::sqrt(1.0f + 23.0f * glint::unit_from_bits<float>(h.y * 7u));
+                        const glm::vec2 along(std::cos(turn), std::sin(turn));
+                        px[i] = glint::grid_pixel_setup(uv, size / stretch * along, size * stretch * glm::vec2(-along.y, along.x), g, lattice_u);
                         single[i] = px[i];
                         ind[i] = env.lookup(direction(static_cast<std::uint32_t>(i), salt), sa).indicators;
                         e_d[i] = env.visible_area(0.3f + 0.7f * glint::unit_from_bits<float>(h.y ^ h.z), sa);

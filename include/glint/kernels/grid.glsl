@@ -74,8 +74,9 @@ GLINT_FN glint_lattice glint_lattice_points(vec4 weight, ivec4 lod, ivec4 level,
 GLINT_FN glint_lattice glint_footprint_lattice(glint_footprint f, real lod_scale) {
     real major = max(f.major, real(1e-30));
     real minor = max(max(f.minor, major / real(16)), real(1e-30));
-    real lod = clamp(log2(minor * max(lod_scale, real(1e-30))), GLINT_MIN_LOD, GLINT_MAX_LOD);
-    real rho = clamp(log2(major / minor), real(0), real(GLINT_MAX_RATIO_LEVEL));
+    // glint_log2 (core.glsl): the same bits in C++, GLSL and the IBL's lanes (ibl.glsl).
+    real lod = clamp(glint_log2(minor * max(lod_scale, real(1e-30))), GLINT_MIN_LOD, GLINT_MAX_LOD);
+    real rho = clamp(glint_log2(major / minor), real(0), real(GLINT_MAX_RATIO_LEVEL));
     int r0 = min(int(glint_floor_bounded(rho)), GLINT_MAX_RATIO_LEVEL - 1);
     real tr = rho - real(r0);
     real l0 = glint_floor_bounded(lod);

@@ -440,12 +440,6 @@ struct glint_ibl_lattice_lanes {
     glint_i32x8 lod[4], level[4], bin[4];
 };
 
-// glint_footprint_lattice of the eight footprints f[v] (major, minor, angle), lane-wise: the same
-// operations in the same order (glint_log2's reduction by bits, frexp's for normal x; GLM's max and
-// min as the selects (x < y) ? y : x and (y < x) ? y : x; the triangle cases and the prism split
-// as selects), so the same values bit for bit; lanes not in `drawing` get weight 0. One pixel at a
-// time this took about 230 instructions a pixel, a fifth of the IBL estimate's, and its log2f
-// calls another 40 (callgrind, glint_frame_loop ibl-rows 4 1).
 // glint_floor_bounded and glint_log2 lane-wise, in place (references: a vector passed by value
 // to a function not compiled for AVX would change the ABI).
 __attribute__((always_inline)) static inline void glint_lanes_floor_bounded(glint_f32x8& x) {
@@ -477,6 +471,12 @@ __attribute__((always_inline)) static inline void glint_lanes_log2(glint_f32x8& 
     x = __builtin_convertvector(e, f32x8) + real(2.88539008177792681472) * (s * t);
 }
 
+// glint_footprint_lattice of the eight footprints f[v] (major, minor, angle), lane-wise: the same
+// operations in the same order (glint_log2's reduction by bits, frexp's for normal x; GLM's max and
+// min as the selects (x < y) ? y : x and (y < x) ? y : x; the triangle cases and the prism split
+// as selects), so the same values bit for bit; lanes not in `drawing` get weight 0. One pixel at a
+// time this took about 230 instructions a pixel, a fifth of the IBL estimate's, and its log2f
+// calls another 40; in lanes about 80 (callgrind, glint_frame_loop ibl-rows 4 1; DEVELOPERS.md).
 __attribute__((always_inline)) static inline void glint_ibl_lanes_lattice(const glint_f32x8& major_in, const glint_f32x8& minor_in, const glint_f32x8& angle,
                                                                          real lod_scale, int drawing, glint_ibl_lattice_lanes& lat) {
     typedef glint_i32x8 i32x8;

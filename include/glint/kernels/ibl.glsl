@@ -558,10 +558,11 @@ __attribute__((always_inline)) static inline void glint_ibl_lanes_lattice(const 
     }
 }
 
-// glint_footprint_vertices of the lanes' pixels on every lattice point (no log-normal density)
-// into d's slot arrays, from the pixels' uv and lattices: glint_lattice_triangles_x4's operations
-// with the pixels in the lanes instead of the lattice points (the same values bit for bit), and
-// no pixel's vertex arrays written.
+// glint_footprint_vertices of the lanes' pixels (no log-normal density) into d's slot arrays,
+// from the pixels' uv and footprints: their lattices (glint_ibl_lanes_lattice), then
+// glint_lattice_triangles_x4's operations with the pixels in the lanes instead of the lattice
+// points, every lattice point in slots 4 t + l, or for a pixel with a lattice_u its chosen point's
+// three vertices in slots 0 to 2 (the same values bit for bit); no pixel's vertex arrays written.
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(GLINT_NO_AVX2)
 __attribute__((noinline, target("avx2"))) static
 #else

@@ -322,16 +322,11 @@ GLINT_FN real glint_normal_pdf(real t) {
 // Smallest normal float, 2^-126.
 GLINT_CONST(real) GLINT_FLT_MIN_NORMAL = real(1.17549435082228750797e-38);
 
-// log(1 + x). Domain x > -1; x <= -1 returns log(2^-126) = -87.34. Range reduction
-// 1 + x = m 2^e with m in [sqrt(1/2), sqrt(2)), then log(m) = 2 atanh(s), s = (m - 1)/(m + 1),
-// |s| <= 0.1716, by its Taylor series in z = s^2 <= 0.0295, truncated after z^6 in float and z^11
-// in double (relative truncation error below z^12 / 25 = 1.7e-20). The rounding error of 1 + x is
-// added back to first order. Measured error in docs/core_numerics.md.
-GLINT_FN real glint_log1p(real x) {
-    x = max(x, real(-1));
-    GLINT_PRECISE real u = max(real(1) + x, GLINT_FLT_MIN_NORMAL);
-    GLINT_PRECISE real c = (x - (u - real(1))) / u;  // 1 + x = u (1 + c)
-    int e;
+// The logarithms' shared core, for a normal u > 0: u = m 2^e with m in [sqrt(1/2), sqrt(2)), and
+// log(m) = 2 atanh(s), s = (m - 1)/(m + 1), |s| <= 0.1716, by its Taylor series in z = s^2 <=
+// 0.0295, truncated after z^6 in float and z^11 in double (relative truncation error below
+// z^12 / 25 = 1.7e-20): returns (s, t) with log(m) = 2 s t, and e.
+GLINT_FN vec2 glint_log_reduced(real u, GLINT_OUT(int) e) {
     real m = frexp(u, e);  // u = m 2^e, m in [0.5, 1)
     bool low = m < real(0.70710678118654752440);  // sqrt(1/2) to 21 digits
     m = low ? real(2) * m : m;
@@ -355,47 +350,35 @@ GLINT_FN real glint_log1p(real x) {
     t = real(1) / real(5) + z * t;
     t = real(1) / real(3) + z * t;
     t = real(1) + z * t;
+    return vec2(s, t);
+}
+
+// log(1 + x). Domain x > -1; x <= -1 returns log(2^-126) = -87.34. glint_log_reduced on 1 + x,
+// whose rounding error is added back to first order. Measured error in docs/core_numerics.md.
+GLINT_FN real glint_log1p(real x) {
+    x = max(x, real(-1));
+    GLINT_PRECISE real u = max(real(1) + x, GLINT_FLT_MIN_NORMAL);
+    GLINT_PRECISE real c = (x - (u - real(1))) / u;  // 1 + x = u (1 + c)
+    int e;
+    vec2 st = glint_log_reduced(u, e);
     // ln 2 to 21 digits.
-    return real(e) * real(0.693147180559945309417) + (real(2) * s * t + c);
+    return real(e) * real(0.693147180559945309417) + (real(2) * st.x * st.y + c);
 }
 
 // log2(x) for x > 0, with x clamped to [2^-126, FLT_MAX] (0, a subnormal or a negative x gives
-// -126, +inf gives 128; NaN stays NaN). glint_log1p's reduction x = m 2^e, m in [sqrt(1/2),
-// sqrt(2)), and series in z = s^2, s = (m - 1)/(m + 1): log2(m) = (2 / ln 2) s (1 + z/3 + z^2/5
-// + ...), truncated after z^5 in float (relative truncation error below z^6 / 13 = 4.5e-11) and
-// z^11 in double. Its own, not the builtin, for the same reason as glint_atan2: the same bits in
-// C++ and GLSL (whose log2 has no stated precision near 1) and, written with operations that
-// vector lanes have too, the same bits in the lanes of ibl.glsl's glint_ibl_sample_pixels as in
-// glint_footprint_lattice. Error: five roundings (2 + f, the division, s t, the constant and its
-// product) of at most 2^-24 relative each, at most 5 ulp of the result; the series' terms add less
-// than 0.02 ulp. Measured in tests/unit/test_pow_one_minus.cpp (3.0 ulp).
+// -126, +inf gives 128; NaN stays NaN): glint_log_reduced, times 2 / ln 2. Its own, not the
+// builtin, for the same reason as glint_atan2: the same bits in C++ and GLSL (whose log2 has no
+// stated precision near 1) and, written with operations that vector lanes have too, the same bits
+// in the lanes of ibl.glsl's glint_ibl_sample_pixels as in glint_footprint_lattice. Error: five
+// roundings (2 + f, the division, s t, the constant and its product) of at most 2^-24 relative
+// each, at most 5 ulp of the result; the series' terms add less than 0.02 ulp. Measured in
+// tests/unit/test_pow_one_minus.cpp (3.0 ulp).
 GLINT_FN real glint_log2(real x) {
     x = min(max(x, GLINT_FLT_MIN_NORMAL), real(3.40282346638528859812e38));  // FLT_MAX, (2 - 2^-23) 2^127
     int e;
-    real m = frexp(x, e);  // x = m 2^e, m in [0.5, 1)
-    bool low = m < real(0.70710678118654752440);  // sqrt(1/2) to 21 digits
-    m = low ? real(2) * m : m;
-    e = low ? e - 1 : e;
-    real f = m - real(1);  // exact (Sterbenz)
-    real s = f / (real(2) + f);
-    real z = s * s;
-    real t = real(1) / real(11);
-    if (GLINT_DOUBLE) {
-        t = real(1) / real(23);
-        t = real(1) / real(21) + z * t;
-        t = real(1) / real(19) + z * t;
-        t = real(1) / real(17) + z * t;
-        t = real(1) / real(15) + z * t;
-        t = real(1) / real(13) + z * t;
-        t = real(1) / real(11) + z * t;
-    }
-    t = real(1) / real(9) + z * t;
-    t = real(1) / real(7) + z * t;
-    t = real(1) / real(5) + z * t;
-    t = real(1) / real(3) + z * t;
-    t = real(1) + z * t;
+    vec2 st = glint_log_reduced(x, e);
     // 2 / ln 2 to 21 digits; precise, or Mesa regroups the product (1 ulp apart from C++).
-    GLINT_PRECISE real r = real(e) + real(2.88539008177792681472) * (s * t);
+    GLINT_PRECISE real r = real(e) + real(2.88539008177792681472) * (st.x * st.y);
     return r;
 }
 

@@ -462,7 +462,8 @@ __attribute__((always_inline)) static inline void glint_lanes_log2(glint_f32x8& 
     const f32x8 f = m - real(1);
     const f32x8 s = f / (real(2) + f);
     const f32x8 z = s * s;
-    f32x8 t = f32x8{} + real(1) / real(11);
+    f32x8 t = f32x8{} + real(1) / real(13);
+    t = real(1) / real(11) + z * t;
     t = real(1) / real(9) + z * t;
     t = real(1) / real(7) + z * t;
     t = real(1) / real(5) + z * t;

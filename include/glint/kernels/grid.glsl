@@ -833,11 +833,6 @@ __attribute__((always_inline, target("avx2"))) static inline glint_f32x8 glint_c
     x = (x < lo) ? zero + lo : x;
     return (hi < x) ? zero + hi : x;
 }
-// glint_floor_bounded lane-wise.
-__attribute__((always_inline, target("avx2"))) static inline glint_f32x8 glint_floor_bounded_x8(glint_f32x8 x) {
-    const glint_f32x8 t = __builtin_convertvector(__builtin_convertvector(x, glint_i32x8), glint_f32x8);
-    return (t > x) ? t - 1.0f : t;
-}
 __attribute__((noinline, target("avx2"))) static void glint_grid_sample_lights_x8(glint_grid_pixel& px, const glint_grid_params& g,
                                                                                   const glint_grid_light* lights, int count, glint_grid_estimate* out) {
     typedef glint_f32x8 f32x8;
@@ -885,7 +880,9 @@ __attribute__((noinline, target("avx2"))) static void glint_grid_sample_lights_x
     // glint_slope_weights
     const float cell = g.slope_cell, cell_c = (cell < 1e-30f) ? 1e-30f : cell;
     const f32x8 gx = glint_clamp_x8(sx / cell_c, -1073741824.0f, 1073741824.0f), gy = glint_clamp_x8(sy / cell_c, -1073741824.0f, 1073741824.0f);
-    const f32x8 ix = glint_floor_bounded_x8(gx), iy = glint_floor_bounded_x8(gy), fx = gx - ix, fy = gy - iy;
+    f32x8 ix = gx, iy = gy;
+    glint_lanes_floor_bounded(ix), glint_lanes_floor_bounded(iy);  // multinomial.glsl
+    const f32x8 fx = gx - ix, fy = gy - iy;
     const i32x8 bx = __builtin_convertvector(ix, i32x8), by = __builtin_convertvector(iy, i32x8);
     const f32x8 mu[4] = {(one - fx) * (one - fy), fx * (one - fy), (one - fx) * fy, fx * fy};
     // glint_grid_corner_probabilities: GGX's glint_slope_area_density_at for point lights, p for

@@ -440,13 +440,8 @@ struct glint_ibl_lattice_lanes {
     glint_i32x8 lod[4], level[4], bin[4];
 };
 
-// glint_floor_bounded and glint_log2 lane-wise, in place (references: a vector passed by value
-// to a function not compiled for AVX would change the ABI).
-__attribute__((always_inline)) static inline void glint_lanes_floor_bounded(glint_f32x8& x) {
-    const glint_f32x8 t = __builtin_convertvector(__builtin_convertvector(x, glint_i32x8), glint_f32x8);
-    x = (t > x) ? t - real(1) : t;
-}
-
+// glint_log2 lane-wise, in place (a reference: a vector passed by value to a function not compiled
+// for AVX would change the ABI).
 __attribute__((always_inline)) static inline void glint_lanes_log2(glint_f32x8& x) {
     typedef glint_f32x8 f32x8;
     typedef glint_i32x8 i32x8;

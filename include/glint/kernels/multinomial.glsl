@@ -691,6 +691,13 @@ typedef float glint_f32x8 __attribute__((vector_size(32)));
 typedef double glint_f64x8 __attribute__((vector_size(64)));
 typedef typename std::conditional<std::is_same<real, float>::value, glint_f32x8, glint_f64x8>::type glint_realx8;
 
+// glint_floor_bounded lane-wise, in place (a reference: a vector passed by value to a function not
+// compiled for AVX would change the ABI): the same values bit for bit.
+__attribute__((always_inline)) static inline void glint_lanes_floor_bounded(glint_f32x8& x) {
+    const glint_f32x8 t = __builtin_convertvector(__builtin_convertvector(x, glint_i32x8), glint_f32x8);
+    x = (t > x) ? t - real(1) : t;
+}
+
 template <int T>
 __attribute__((always_inline)) static inline bool glint_multinomial_exact_lanes_pass(const uint (&c)[8][8], const uint (&full)[8][8], const uint stop_lanes[8],
                                                                                     int stop_digit, const uint lanes_in[8], const uint frac_in[8],

@@ -181,6 +181,21 @@ void grid_sample_lights(const vec2_t<real>& uv, const vec2_t<real>& duvdx, const
     grid_sample_lights(px, g, lights, count, out);
 }
 
+// Several pixels, each under its own light (a row of pixels under one point light, whose half
+// vector differs from pixel to pixel): out[i] = grid_sample(px[i], g, lights[i]), bit for bit;
+// count may be 0, nothing allocated. Where the CPU has AVX2 (float) and density_sigma is 0, eight
+// pixels at a time share vector lanes, a pixel a lane: the lights' set-up, the footprints'
+// lattices and vertices and the skip test, so that a pixel costs a fraction of a grid_sample call
+// (kernels/grid.glsl, glint_grid_sample_pixels; docs/grid.md measures it). The pixels' vertex
+// arrays are left as they were (a later grid_sample(px[i], ...) computes them).
+template <class real>
+void grid_sample_pixels(grid_pixel<real>* px, const grid_params<real>& g, const grid_light<real>* lights, std::size_t count, grid_estimate<real>* out) {
+    const auto k = detail::to_kernel(g);
+    for (std::size_t first = 0; first < count; first += 1u << 20)  // the kernel counts in int
+        detail::glsl::kernels<real>::glint_grid_sample_pixels(px + first, k, lights + first, static_cast<int>(std::min<std::size_t>(count - first, 1u << 20)),
+                                                              out + first);
+}
+
 // R / E[R], the factor on the smooth result (the kernels' glint_modulation; 0 if E[R] = 0), for
 // the estimates of glint::grid_sample and glint::ibl_sample (one type, glint_grid_estimate, whose
 // real cannot be deduced through the nested name: a template on the estimate).

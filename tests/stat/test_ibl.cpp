@@ -352,7 +352,7 @@ TEST_CASE("ibl: C++'s level shares, drawn four or eight lane groups at a time, e
     CHECK(differ == 0);
 }
 
-TEST_CASE("ibl: the lanes' lattice (glint_ibl_lanes_lattice) is glint_footprint_lattice's bit for bit, every triangle case and prism split") {
+TEST_CASE("ibl: the lanes' lattice (glint_lanes_lattice) is glint_footprint_lattice's bit for bit, every triangle case and prism split") {
     // 2^17 footprints in 16384 passes of eight: log2 of the minor axis uniform in [-30, 30] (past
     // both LOD clamps), aspect ratios 1 to 2^5 (past the clamp at 16), angles over [0, pi), and
     // the edges: minor axes at powers of two (tl = 0), ratios at powers of two (tr = 0), angles at
@@ -382,8 +382,8 @@ TEST_CASE("ibl: the lanes' lattice (glint_ibl_lanes_lattice) is glint_footprint_
             major[v] = f[v].major, minor[v] = f[v].minor, angle[v] = f[v].angle;
         }
         const int drawing = static_cast<int>(pass * 2654435761u >> 24);
-        K::glint_ibl_lattice_lanes lat;
-        K::glint_ibl_lanes_lattice(major, minor, angle, lod_scale, drawing, lat);
+        K::glint_lattice_lanes lat;
+        K::glint_lanes_lattice(major, minor, angle, lod_scale, drawing, lat);
         for (int v = 0; v < 8; ++v) {
             const auto l = K::glint_footprint_lattice(f[v], lod_scale);
             const bool draws = ((drawing >> v) & 1) != 0;

@@ -711,12 +711,18 @@ GLINT_FN vec4 glint_grid_corner_probabilities(glint_grid_params g, glint_grid_li
     return p;
 }
 
+// The count that a vertex with words hash_x, hash_y and n = N share trials draws at the slope cell
+// whose key is corner_key, with probability p.
+GLINT_FN real glint_vertex_corner_count(glint_grid_params g, real n, uint hash_x, uint hash_y, uint corner_key, real p) {
+    uint h1 = glint_cell_draw_word(hash_x, corner_key);
+    real u1 = glint_open_unit_from_bits(h1);
+    real u2 = glint_open_unit_from_bits(glint_cell_draw_second_word(h1, hash_y));
+    return glint_binomial_variant(g.variant, n, p, u1, u2, g.pow_method).positive;
+}
+
 // The count that vertex slot i draws at the slope cell whose key is corner_key, with probability p.
 GLINT_FN real glint_grid_corner_count(GLINT_IN(glint_grid_pixel) px, glint_grid_params g, int i, uint corner_key, real p) {
-    uint h1 = glint_cell_draw_word(px.v.hash_x[i], corner_key);
-    real u1 = glint_open_unit_from_bits(h1);
-    real u2 = glint_open_unit_from_bits(glint_cell_draw_second_word(h1, px.v.hash_y[i]));
-    return glint_binomial_variant(g.variant, px.N * px.v.share[i], p, u1, u2, g.pow_method).positive;
+    return glint_vertex_corner_count(g, px.N * px.v.share[i], px.v.hash_x[i], px.v.hash_y[i], corner_key, p);
 }
 
 // R for one light on a pixel's footprint (the vertices computed on first need).
@@ -833,15 +839,31 @@ __attribute__((always_inline, target("avx2"))) static inline glint_f32x8 glint_c
     x = (x < lo) ? zero + lo : x;
     return (hi < x) ? zero + hi : x;
 }
-__attribute__((noinline, target("avx2"))) static void glint_grid_sample_lights_x8(glint_grid_pixel& px, const glint_grid_params& g,
-                                                                                  const glint_grid_light* lights, int count, glint_grid_estimate* out) {
+// Eight lights' set-up, a light a lane (lane l: lights[l], or for l >= count an extended light
+// with p = 0, whose E[R] is 0), on footprints holding N[l] microfacets: glint_grid_sample_pixel's
+// steps up to its skip test with the same operations in the same order (the same values bit for
+// bit). Returns false where a lane holds a point light on the Beckmann NDF, whose density needs
+// libm's exp per corner (then the caller takes the single-light path and o is not filled).
+struct glint_light_lanes {
+    glint_f32x8 mu[4];        // the slope corners' bilinear weights (glint_slope_weights)
+    glint_f32x8 corner_p[4];  // p_j where corner j is live (m_j > 0 and p_j > 0), else 0
+    glint_f32x8 p24[4];       // the skip test's p_j 2^24 (FLT_MAX for a published variant: see below)
+    glint_u32x8 key[4];       // glint_slope_cell_key of corner j
+    glint_i32x8 bit[4];       // bit j where corner j is live
+    glint_f32x8 expected;     // E[R]
+    glint_i32x8 smooth;       // all ones where R = E[R] is returned
+    glint_i32x8 draws;        // all ones where the light needs draws (neither 0 nor the smooth result)
+};
+
+__attribute__((always_inline, target("avx2"))) static inline bool glint_light_lanes_setup(const glint_grid_params& g, const glint_grid_light* lights, int count,
+                                                                                          const glint_f32x8& N, glint_light_lanes& o) {
     typedef glint_f32x8 f32x8;
     typedef glint_i32x8 i32x8;
-    typedef uint u32x8 __attribute__((vector_size(32)));
+    typedef glint_u32x8 u32x8;
     const f32x8 zero = {}, one = zero + 1.0f;
     // The lights' eight 4-byte fields (kind, p, slope, ndf, alpha, total_area: one AVX2 register
     // each) transposed into one vector per field, a light a lane: 24 shuffles instead of 64 lane
-    // inserts. Lanes past count: an extended light with p = 0 (E[R] = 0), whose result is not written.
+    // inserts.
     static_assert(sizeof(glint_grid_light) == 32, "glint_grid_light: eight 4-byte fields");
     f32x8 r[8];
     for (int l = 0; l < 8; ++l) {
@@ -873,10 +895,7 @@ __attribute__((noinline, target("avx2"))) static void glint_grid_sample_lights_x
     const f32x8 ax = __builtin_shuffle(u[1], u[5], high_halves), ay = __builtin_shuffle(u[2], u[6], high_halves),
                 area = __builtin_shuffle(u[3], u[7], high_halves);
     const i32x8 point = kind == 0;
-    if (__builtin_ia32_movmskps256(reinterpret_cast<f32x8>(point & (ndf == GLINT_NDF_BECKMANN))) != 0) {
-        for (int k = 0; k < count; ++k) out[k] = glint_grid_sample_pixel(px, g, lights[k]);
-        return;
-    }
+    if (__builtin_ia32_movmskps256(reinterpret_cast<f32x8>(point & (ndf == GLINT_NDF_BECKMANN))) != 0) return false;
     // glint_slope_weights
     const float cell = g.slope_cell, cell_c = (cell < 1e-30f) ? 1e-30f : cell;
     const f32x8 gx = glint_clamp_x8(sx / cell_c, -1073741824.0f, 1073741824.0f), gy = glint_clamp_x8(sy / cell_c, -1073741824.0f, 1073741824.0f);
@@ -884,7 +903,7 @@ __attribute__((noinline, target("avx2"))) static void glint_grid_sample_lights_x
     glint_lanes_floor_bounded(ix), glint_lanes_floor_bounded(iy);  // multinomial.glsl
     const f32x8 fx = gx - ix, fy = gy - iy;
     const i32x8 bx = __builtin_convertvector(ix, i32x8), by = __builtin_convertvector(iy, i32x8);
-    const f32x8 mu[4] = {(one - fx) * (one - fy), fx * (one - fy), (one - fx) * fy, fx * fy};
+    o.mu[0] = (one - fx) * (one - fy), o.mu[1] = fx * (one - fy), o.mu[2] = (one - fx) * fy, o.mu[3] = fx * fy;
     // glint_grid_corner_probabilities: GGX's glint_slope_area_density_at for point lights, p for
     // extended ones.
     const f32x8 axc = glint_clamp_x8(ax, GLINT_MIN_ROUGHNESS, GLINT_MAX_ROUGHNESS), ayc = glint_clamp_x8(ay, GLINT_MIN_ROUGHNESS, GLINT_MAX_ROUGHNESS);
@@ -892,7 +911,6 @@ __attribute__((noinline, target("avx2"))) static void glint_grid_sample_lights_x
     const f32x8 scale = (cell * cell) / ((area < 1.0f) ? one : area);
     const f32x8 p_extended = glint_clamp_x8(lp, 0.0f, 1.0f);
     f32x8 p[4];
-    u32x8 key[4];
     for (int j = 0; j < 4; ++j) {
         const i32x8 cx = bx + (j & 1), cy = by + (j >> 1);
         const f32x8 csx = __builtin_convertvector(cx, f32x8) * cell, csy = __builtin_convertvector(cy, f32x8) * cell;
@@ -901,50 +919,69 @@ __attribute__((noinline, target("avx2"))) static void glint_grid_sample_lights_x
         const f32x8 jac = __builtin_ia32_sqrtps256(one + (csx * csx + csy * csy)) * norm;
         const f32x8 p_point = glint_clamp_x8(scale * (jac / ((one + u2) * (one + u2))), 0.0f, 1.0f);
         p[j] = point ? p_point : p_extended;
-        key[j] = reinterpret_cast<u32x8>(cx) * 0x9e3779b9u + reinterpret_cast<u32x8>(cy);  // glint_slope_cell_key
-        glint_hash_u32_vector(key[j]);
+        o.key[j] = reinterpret_cast<u32x8>(cx) * 0x9e3779b9u + reinterpret_cast<u32x8>(cy);  // glint_slope_cell_key
+        glint_hash_u32_vector(o.key[j]);
     }
-    const f32x8 expected = (mu[0] * p[0] + mu[1] * p[1]) + (mu[2] * p[2] + mu[3] * p[3]);
+    o.expected = (o.mu[0] * p[0] + o.mu[1] * p[1]) + (o.mu[2] * p[2] + o.mu[3] * p[3]);
     f32x8 q[4];
-    for (int j = 0; j < 4; ++j) q[j] = (mu[j] * mu[j]) * (p[j] * (one - p[j]));
-    const float N = px.N, tol = g.smooth_tolerance;
-    const f32x8 var_bound = ((q[0] + q[1]) + (q[2] + q[3])) / ((N < 1e-30f) ? 1e-30f : N) + glint_density_variance_factor(g) * expected * expected;
-    const i32x8 reflects = expected > 0.0f, smooth = reflects & (var_bound <= tol * tol * expected * expected);
-    const i32x8 draws = (reflects & ~smooth) & (N > 1e-30f ? -1 : 0);
+    for (int j = 0; j < 4; ++j) q[j] = (o.mu[j] * o.mu[j]) * (p[j] * (one - p[j]));
+    const float tol = g.smooth_tolerance;
+    const f32x8 var_bound = ((q[0] + q[1]) + (q[2] + q[3])) / ((N < 1e-30f) ? zero + 1e-30f : N) + glint_density_variance_factor(g) * o.expected * o.expected;
+    const i32x8 reflects = o.expected > 0.0f;
+    o.smooth = reflects & (var_bound <= tol * tol * o.expected * o.expected);
+    o.draws = reflects & ~o.smooth & (N > 1e-30f);
+    // The live corners and the skip test's bound (glint_skip_test_masks: the same integer hash,
+    // float product and sum per (vertex, corner)). Each corner's bit carries its lanes' liveness
+    // (bit[j]), and where the skip test does not apply (a published variant) p24 is FLT_MAX
+    // instead of p_j 2^24, a bound that every vertex with a scale passes: the live corners of
+    // every vertex, as the single-light path's (b | always) & live, with two vectors fewer in
+    // the loop (`always` had spilled to the stack). A slot without a vertex (scale 0) gets bits
+    // from u1 < 1e-5 alone there, which nothing reads: its weight 0 keeps it from drawing.
+    const bool skip_test = glint_skip_test_applies(g);
+    for (int j = 0; j < 4; ++j) {
+        const i32x8 on = (o.mu[j] > 0.0f) & (p[j] > 0.0f);
+        o.corner_p[j] = on ? p[j] : zero;
+        o.p24[j] = skip_test ? o.corner_p[j] * 16777216.0f : zero + 3.4028234663852886e38f;  // 2^24; FLT_MAX
+        o.bit[j] = on & (1 << j);
+    }
+    return true;
+}
+
+// The estimates' results before any draw: E[R], and R = E[R] where the smooth result is returned.
+__attribute__((always_inline, target("avx2"))) static inline void glint_light_lanes_results(const glint_light_lanes& o, int count, glint_grid_estimate* out) {
+    const glint_f32x8 value = o.smooth ? o.expected : glint_f32x8{};
     for (int l = 0; l < count; ++l) {
-        out[l].value = smooth[l] ? expected[l] : 0.0f;
-        out[l].expected = expected[l];
+        out[l].value = value[l];
+        out[l].expected = o.expected[l];
         out[l].draws = 0;
     }
-    if (__builtin_ia32_movmskps256(reinterpret_cast<f32x8>(draws)) == 0) return;
-    if (!px.ready) glint_grid_pixel_vertices(px, g);
-    // The live corners and the skip test (glint_skip_test_masks: the same integer hash, float
-    // product and sum per (vertex, corner)), vertex by vertex against the eight lights. Each
-    // corner's bit carries its lanes' liveness inside the test (bit[j]), and where the skip test
-    // does not apply (a published variant) p24 is FLT_MAX instead of p_j 2^24, a bound that every
-    // vertex with a scale passes: the live corners of every vertex, as the single-light path's
-    // (b | always) & live, with two vectors fewer in the loop (`always` had spilled to the
-    // stack). A slot without a vertex (scale 0) gets bits from u1 < 1e-5 alone there, which
-    // nothing reads: its weight 0 keeps it from drawing.
-    const bool skip_test = glint_skip_test_applies(g);
-    f32x8 corner_p[4], p24[4];
-    i32x8 bit[4];
-    for (int j = 0; j < 4; ++j) {
-        const i32x8 on = (mu[j] > 0.0f) & (p[j] > 0.0f);
-        corner_p[j] = on ? p[j] : zero;
-        p24[j] = skip_test ? corner_p[j] * 16777216.0f : zero + 3.4028234663852886e38f;  // 2^24; FLT_MAX
-        bit[j] = on & (1 << j);
+}
+
+__attribute__((noinline, target("avx2"))) static void glint_grid_sample_lights_x8(glint_grid_pixel& px, const glint_grid_params& g,
+                                                                                  const glint_grid_light* lights, int count, glint_grid_estimate* out) {
+    typedef glint_f32x8 f32x8;
+    typedef glint_i32x8 i32x8;
+    typedef glint_u32x8 u32x8;
+    const float N = px.N;
+    glint_light_lanes o;
+    if (!glint_light_lanes_setup(g, lights, count, f32x8{} + N, o)) {
+        for (int k = 0; k < count; ++k) out[k] = glint_grid_sample_pixel(px, g, lights[k]);
+        return;
     }
+    glint_light_lanes_results(o, count, out);
+    if (__builtin_ia32_movmskps256(reinterpret_cast<f32x8>(o.draws)) == 0) return;
+    if (!px.ready) glint_grid_pixel_vertices(px, g);
+    // The skip test (glint_light_lanes_setup's bound), vertex by vertex against the eight lights.
     i32x8 bits[12], any = {};
     for (int i = 0; i < px.v.count; ++i) {
         const uint hx = px.v.hash_x[i];
         const float sc = px.skip_scale[i];
         i32x8 b = {};
         for (int j = 0; j < 4; ++j) {
-            u32x8 h = key[j] ^ hx;
+            u32x8 h = o.key[j] ^ hx;
             glint_hash_u32_vector(h);
             const f32x8 below = __builtin_convertvector(reinterpret_cast<i32x8>(h >> 8u), f32x8);  // below 2^24: exact
-            b |= (below < sc * p24[j] + 167.77216f) & bit[j];                                       // 1e-5 2^24
+            b |= (below < sc * o.p24[j] + 167.77216f) & o.bit[j];                                   // 1e-5 2^24
         }
         bits[i] = b;
         any |= b;
@@ -955,16 +992,16 @@ __attribute__((noinline, target("avx2"))) static void glint_grid_sample_lights_x
     const int slot[12] = {0, 4, 8, 1, 5, 9, 2, 6, 10, 3, 7, 11};  // glint_grid_draw_slot(12, k)
     i32x8 order = {};
     for (int k = 0; k < px.v.count; ++k) order |= (bits[four_points ? slot[k] : k] != 0) & (1 << k);
-    for (int lanes = __builtin_ia32_movmskps256(reinterpret_cast<f32x8>(draws & (any != 0))); lanes != 0; lanes &= lanes - 1) {
+    for (int lanes = __builtin_ia32_movmskps256(reinterpret_cast<f32x8>(o.draws & (any != 0))); lanes != 0; lanes &= lanes - 1) {
         const int l = __builtin_ctz(static_cast<unsigned>(lanes));
-        glint_grid_estimate& o = out[l];
+        glint_grid_estimate& e = out[l];
         for (int vertices = order[l]; vertices != 0; vertices &= vertices - 1) {
             const int k = __builtin_ctz(static_cast<unsigned>(vertices)), i = four_points ? slot[k] : k;
             if (!(px.v.weight[i] > 0.0f)) continue;
             for (int corners = bits[i][l]; corners != 0; corners &= corners - 1) {
                 const int j = __builtin_ctz(static_cast<unsigned>(corners));
-                o.value += px.v.weight[i] * mu[j][l] * glint_grid_corner_count(px, g, i, key[j][l], corner_p[j][l]) / N;
-                ++o.draws;
+                e.value += px.v.weight[i] * o.mu[j][l] * glint_grid_corner_count(px, g, i, o.key[j][l], o.corner_p[j][l]) / N;
+                ++e.draws;
             }
         }
     }
@@ -988,6 +1025,314 @@ GLINT_FN_OUT_OF_LINE void glint_grid_sample_pixel_lights(glint_grid_pixel& px, c
         }
 #endif
         for (int k = 0; k < n; ++k) out[first + k] = glint_grid_sample_pixel(px, g, lights[first + k]);
+    }
+}
+#endif
+
+#if !defined(GLINT_GLSL)
+// ---------------------------------------------------------------------------------------------
+// C++ only: eight pixels' footprints in AVX2 lanes (lane v holds pixel v), for the batches of
+// glint_grid_sample_pixels below and glint_ibl_sample_pixels (ibl.glsl).
+
+// The lanes' vertices, slot by lane: [s][v] is slot s of pixel v, as glint_grid_vertices holds it.
+struct glint_lanes_vertices {
+    int count[8];  // 12 where the lane's pixel draws on its four lattice points, 3 on one, else 0
+    real share[12][8];
+    real weight[12][8];
+    uint hash_x[12][8], hash_y[12][8], hash_z[12][8];
+};
+
+// The lanes' pixels' lattice points ([l] a vector of the eight lanes; weight 0 in a lane that does
+// not draw) and each point's rotation (glint_lattice_rotation).
+struct glint_lattice_lanes {
+    glint_f32x8 weight[4], cos[4], sin[4];
+    glint_i32x8 lod[4], level[4], bin[4];
+};
+
+// glint_log2 lane-wise, in place (a reference: a vector passed by value to a function not compiled
+// for AVX would change the ABI).
+__attribute__((always_inline)) static inline void glint_lanes_log2(glint_f32x8& x) {
+    typedef glint_f32x8 f32x8;
+    typedef glint_i32x8 i32x8;
+    const f32x8 lo = f32x8{} + GLINT_FLT_MIN_NORMAL, hi = f32x8{} + real(3.40282346638528859812e38);
+    x = (x < lo) ? lo : x;  // GLM's max, then min
+    x = (hi < x) ? hi : x;
+    const glint_u32x8 bits = reinterpret_cast<glint_u32x8>(x);
+    f32x8 m = reinterpret_cast<f32x8>((bits & 0x807fffffu) | 0x3f000000u);  // frexp of a normal x
+    i32x8 e = reinterpret_cast<i32x8>(bits >> 23u) - 126;
+    const i32x8 low = m < real(0.70710678118654752440);
+    m = low ? real(2) * m : m;
+    e = low ? e - 1 : e;
+    const f32x8 f = m - real(1);
+    const f32x8 s = f / (real(2) + f);
+    const f32x8 z = s * s;
+    f32x8 t = f32x8{} + real(1) / real(13);
+    t = real(1) / real(11) + z * t;
+    t = real(1) / real(9) + z * t;
+    t = real(1) / real(7) + z * t;
+    t = real(1) / real(5) + z * t;
+    t = real(1) / real(3) + z * t;
+    t = real(1) + z * t;
+    x = __builtin_convertvector(e, f32x8) + real(2.88539008177792681472) * (s * t);
+}
+
+// glint_footprint_lattice of the eight footprints f[v] (major, minor, angle), lane-wise: the same
+// operations in the same order (glint_log2's reduction by bits, frexp's for normal x; GLM's max and
+// min as the selects (x < y) ? y : x and (y < x) ? y : x; the triangle cases and the prism split
+// as selects), so the same values bit for bit; lanes not in `drawing` get weight 0. One pixel at a
+// time this took about 230 instructions a pixel, a fifth of the IBL estimate's, and its log2f
+// calls another 40; in lanes about 80 (callgrind, glint_frame_loop ibl-rows 4 1; DEVELOPERS.md).
+__attribute__((always_inline)) static inline void glint_lanes_lattice(const glint_f32x8& major_in, const glint_f32x8& minor_in, const glint_f32x8& angle,
+                                                                     real lod_scale, int drawing, glint_lattice_lanes& lat) {
+    typedef glint_i32x8 i32x8;
+    typedef glint_f32x8 f32x8;
+    const f32x8 zero = {};
+    // GLM's max(x, y) and min(x, y) as (x < y) ? y : x and (y < x) ? y : x.
+    f32x8 major = (major_in < real(1e-30)) ? zero + real(1e-30) : major_in;
+    const f32x8 major_16 = major / real(16);
+    f32x8 minor = (minor_in < major_16) ? major_16 : minor_in;
+    minor = (minor < real(1e-30)) ? zero + real(1e-30) : minor;
+    f32x8 lod = minor * max(lod_scale, real(1e-30)), rho = major / minor;
+    glint_lanes_log2(lod), glint_lanes_log2(rho);
+    lod = (lod < GLINT_MIN_LOD) ? zero + GLINT_MIN_LOD : lod;
+    lod = (GLINT_MAX_LOD < lod) ? zero + GLINT_MAX_LOD : lod;
+    rho = (rho < real(0)) ? zero : rho;
+    rho = (real(GLINT_MAX_RATIO_LEVEL) < rho) ? zero + real(GLINT_MAX_RATIO_LEVEL) : rho;
+    f32x8 rho_floor = rho;
+    glint_lanes_floor_bounded(rho_floor);
+    i32x8 r0 = __builtin_convertvector(rho_floor, i32x8);
+    r0 = (r0 < GLINT_MAX_RATIO_LEVEL - 1) ? r0 : i32x8{} + (GLINT_MAX_RATIO_LEVEL - 1);
+    const f32x8 tr = rho - __builtin_convertvector(r0, f32x8);
+    f32x8 l0 = lod;
+    glint_lanes_floor_bounded(l0);
+    const f32x8 tl = lod - l0;
+    // The triangle in the (angle, tr) strip: level 0's fan has level 1's four bins.
+    const i32x8 fan = (r0 == 0);
+    const i32x8 lo = r0 * 1024, hi = (r0 + 1) * 1024;
+    const i32x8 n0 = fan ? i32x8{} + 4 : (i32x8{} + 2) << r0;
+    const f32x8 x = angle * __builtin_convertvector(n0, f32x8) / GLINT_PI;
+    f32x8 x_floor = x;
+    glint_lanes_floor_bounded(x_floor);
+    i32x8 k = __builtin_convertvector(x_floor, i32x8);
+    k = (k < n0 - 1) ? k : n0 - 1;
+    const f32x8 fx = x - __builtin_convertvector(k, f32x8);
+    const i32x8 kn = (k + 1 == n0) ? i32x8{} : k + 1;  // the fan's (k + 1) & 3
+    const i32x8 t0 = 2 * k, t1 = 2 * k + 1, t2 = (2 * k + 2 == 2 * n0) ? i32x8{} : 2 * k + 2;
+    const i32x8 case_a = ~fan & (fx < real(0.5) * tr), case_c = ~fan & ~case_a & (fx > real(1) - real(0.5) * tr);
+    const i32x8 case_b = ~fan & ~case_a & ~case_c;
+    const f32x8 gx = real(1) - fx;
+    i32x8 key[3] = {fan ? lo : (case_c ? lo + kn : lo + k), fan ? hi + k : (case_b ? hi + t1 : (case_a ? hi + t0 : hi + t1)),
+                    fan ? hi + kn : (case_b ? lo + kn : (case_a ? hi + t1 : hi + t2))};
+    f32x8 bary[3] = {case_b ? real(1) - fx - real(0.5) * tr : real(1) - tr,
+                     fan ? tr * (real(1) - fx) : (case_b ? tr : (case_a ? tr - real(2) * fx : real(2) * gx)),
+                     fan ? tr * fx : (case_b ? fx - real(0.5) * tr : (case_a ? real(2) * fx : tr - real(2) * gx))};
+    for (int i = 0; i < 3; ++i) bary[i] = (bary[i] < real(0)) ? zero : bary[i];
+    // Sort the three vertices by key (glint_footprint_lattice's three compare-and-swaps).
+    for (int a : {0, 1, 0}) {
+        const int b = a + 1;
+        const i32x8 swap = key[a] > key[b];
+        const i32x8 ka = key[a];
+        const f32x8 ba = bary[a];
+        key[a] = swap ? key[b] : key[a], key[b] = swap ? ka : key[b];
+        bary[a] = swap ? bary[b] : bary[a], bary[b] = swap ? ba : bary[b];
+    }
+    // The prism split: v1 < v2 < v3 at L0 and L0 + 1.
+    const i32x8 L0 = __builtin_convertvector(l0, i32x8);
+    i32x8 level[3], bin[3];
+    for (int i = 0; i < 3; ++i) level[i] = key[i] >> 10, bin[i] = key[i] & 1023;  // key / 1024 for key >= 0
+    const i32x8 first = (tl <= bary[0]), second = ~first & (tl <= bary[0] + bary[1]);
+    const f32x8 w[4] = {first ? bary[0] - tl : bary[0], first ? bary[1] : (second ? bary[0] + bary[1] - tl : bary[1]),
+                        (first | second) ? bary[2] : real(1) - tl, first ? tl : (second ? tl - bary[0] : tl - bary[0] - bary[1])};
+    const i32x8 up = L0 + 1;
+    const i32x8 lods[4] = {first ? L0 : up, (first | second) ? L0 : up, L0, up};
+    const i32x8 last_level = first ? level[0] : (second ? level[1] : level[2]), last_bin = first ? bin[0] : (second ? bin[1] : bin[2]);
+    i32x8 draws = {};
+    for (int v = 0; v < 8; ++v) draws[v] = ((drawing >> v) & 1) != 0 ? -1 : 0;
+    static const vec2* const rotation = glint_lattice_rotation_table();
+    for (int l = 0; l < 4; ++l) {
+        lat.weight[l] = draws ? ((w[l] < real(0)) ? zero : w[l]) : zero;
+        lat.lod[l] = lods[l];
+        lat.level[l] = (l < 3) ? level[l] : last_level;
+        lat.bin[l] = (l < 3) ? bin[l] : last_bin;
+        // glint_lattice_rotation from the table, lane by lane into registers.
+        const i32x8 r = (lat.bin[l] << (GLINT_MAX_RATIO_LEVEL - lat.level[l])) & 31;
+        lat.cos[l] = f32x8{rotation[r[0]].x, rotation[r[1]].x, rotation[r[2]].x, rotation[r[3]].x,
+                           rotation[r[4]].x, rotation[r[5]].x, rotation[r[6]].x, rotation[r[7]].x};
+        lat.sin[l] = f32x8{rotation[r[0]].y, rotation[r[1]].y, rotation[r[2]].y, rotation[r[3]].y,
+                           rotation[r[4]].y, rotation[r[5]].y, rotation[r[6]].y, rotation[r[7]].y};
+    }
+}
+
+// glint_footprint_vertices of the lanes' pixels (no log-normal density) into d's slot arrays,
+// from the pixels' uv and footprints: their lattices (glint_lanes_lattice), then
+// glint_lattice_triangles_x4's operations with the pixels in the lanes instead of the lattice
+// points, every lattice point in slots 4 t + l, or for a pixel with a lattice_u its chosen point's
+// three vertices in slots 0 to 2 (the same values bit for bit); no pixel's vertex arrays written.
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(GLINT_NO_AVX2)
+__attribute__((noinline, target("avx2"))) static
+#else
+__attribute__((noinline)) static
+#endif
+void glint_lanes_footprint_vertices(glint_lanes_vertices& d, int n, const glint_grid_pixel* px, real lod_scale, int drawing, uint seed) {
+    typedef glint_u32x8 u32x8;
+    typedef glint_i32x8 i32x8;
+    typedef glint_u64x4 u64x4;
+    typedef glint_f32x8 f32x8;
+    // The pixels' uv and footprints, from scalars in registers (lanes n to 7 repeat pixel n - 1).
+    const glint_grid_pixel* q[8];
+    for (int v = 0; v < 8; ++v) q[v] = px + std::min(v, n - 1);
+    const f32x8 ux = {q[0]->uv.x, q[1]->uv.x, q[2]->uv.x, q[3]->uv.x, q[4]->uv.x, q[5]->uv.x, q[6]->uv.x, q[7]->uv.x};
+    const f32x8 uy = {q[0]->uv.y, q[1]->uv.y, q[2]->uv.y, q[3]->uv.y, q[4]->uv.y, q[5]->uv.y, q[6]->uv.y, q[7]->uv.y};
+    const f32x8 major = {q[0]->f.major, q[1]->f.major, q[2]->f.major, q[3]->f.major, q[4]->f.major, q[5]->f.major, q[6]->f.major, q[7]->f.major};
+    const f32x8 minor = {q[0]->f.minor, q[1]->f.minor, q[2]->f.minor, q[3]->f.minor, q[4]->f.minor, q[5]->f.minor, q[6]->f.minor, q[7]->f.minor};
+    const f32x8 angle = {q[0]->f.angle, q[1]->f.angle, q[2]->f.angle, q[3]->f.angle, q[4]->f.angle, q[5]->f.angle, q[6]->f.angle, q[7]->f.angle};
+    const f32x8 lattice_u = {q[0]->lattice_u, q[1]->lattice_u, q[2]->lattice_u, q[3]->lattice_u,
+                             q[4]->lattice_u, q[5]->lattice_u, q[6]->lattice_u, q[7]->lattice_u};
+    glint_lattice_lanes lat;
+    glint_lanes_lattice(major, minor, angle, lod_scale, drawing, lat);
+    // One lattice point (glint_grid_pixel_setup_stochastic's pixels): glint_lattice_choice lane-wise;
+    // its three vertices go to slots 0 to 2 with share 1, as glint_footprint_vertices puts them.
+    const i32x8 one_point = lattice_u >= real(0);
+    const u64x4 any_one = reinterpret_cast<u64x4>(one_point);
+    const bool some_one = (any_one[0] | any_one[1] | any_one[2] | any_one[3]) != 0u;
+    i32x8 chosen = i32x8{} - 1;
+    f32x8 below = {};
+    for (int l = 0; l < 4; ++l) {
+        const i32x8 on = lat.weight[l] > real(0);
+        chosen = (on & ((chosen < 0) | (lattice_u >= below))) ? i32x8{} + l : chosen;
+        below = on ? below + lat.weight[l] : below;
+    }
+    f32x8 one_weight[3] = {}, one_share[3] = {};
+    u32x8 one_hash_x[3] = {}, one_hash_y[3] = {}, one_hash_z[3] = {};
+    for (int v = 0; v < 8; ++v) d.count[v] = ((drawing >> v) & 1) == 0 ? 0 : (one_point[v] != 0 ? 3 : 12);
+    for (int l = 0; l < 4; ++l) {
+        const f32x8 c = lat.cos[l], sn = lat.sin[l], wl = lat.weight[l];
+        const i32x8 lod = lat.lod[l], level = lat.level[l], bin = lat.bin[l];
+        const f32x8 scale_x = reinterpret_cast<f32x8>((-lod - level + 127) << 23), scale_y = reinterpret_cast<f32x8>((-lod + 127) << 23);
+        const f32x8 qx = (c * ux + sn * uy) * scale_x, qy = (-sn * ux + c * uy) * scale_y;
+        f32x8 sx = qx - qy * real(0.577350269189625764509), sy = qy * real(1.15470053837925152902);
+        const f32x8 lo = f32x8{} + real(-1073741824), hi = f32x8{} + real(1073741824);
+        sx = (sx < lo) ? lo : sx, sy = (sy < lo) ? lo : sy;
+        sx = (hi < sx) ? hi : sx, sy = (hi < sy) ? hi : sy;
+        f32x8 ix = __builtin_convertvector(__builtin_convertvector(sx, i32x8), f32x8), iy = __builtin_convertvector(__builtin_convertvector(sy, i32x8), f32x8);
+        ix = (ix > sx) ? ix - real(1) : ix, iy = (iy > sy) ? iy - real(1) : iy;
+        const f32x8 fx = sx - ix, fy = sy - iy;
+        const i32x8 bx = __builtin_convertvector(ix, i32x8), by = __builtin_convertvector(iy, i32x8);
+        const i32x8 u = (!(fx + fy < real(1))) & 1;
+        const f32x8 uf = __builtin_convertvector(u, f32x8);
+        const f32x8 w[3] = {real(1) - fx - fy, uf - fx, uf - fy};
+        const u32x8 key = (reinterpret_cast<u32x8>(lod + 64) | (reinterpret_cast<u32x8>(level) << 8u) | (reinterpret_cast<u32x8>(bin) << 12u)) ^ seed;
+        u32x8 hx[3] = {reinterpret_cast<u32x8>(bx + u), reinterpret_cast<u32x8>(bx + 1 - u), reinterpret_cast<u32x8>(bx + u)};
+        u32x8 hy[3] = {reinterpret_cast<u32x8>(by + u), reinterpret_cast<u32x8>(by + u), reinterpret_cast<u32x8>(by + 1 - u)};
+        u32x8 hz[3] = {key, key, key};
+        for (int t = 0; t < 3; ++t) {
+            glint_pcg3d_vectors(hx[t], hy[t], hz[t]);
+            const f32x8 wt = reinterpret_cast<f32x8>(reinterpret_cast<u32x8>(w[t]) & 0x7fffffffu);  // glint_abs
+            const auto on = (wt > real(0)) & (wl > real(0));
+            const f32x8 weight = on ? wt : f32x8{}, share = on ? wl : f32x8{};
+            const int slot = 4 * t + l;
+            std::memcpy(d.weight[slot], &weight, sizeof(weight)), std::memcpy(d.share[slot], &share, sizeof(share));
+            std::memcpy(d.hash_x[slot], &hx[t], sizeof(hx[t])), std::memcpy(d.hash_y[slot], &hy[t], sizeof(hy[t])), std::memcpy(d.hash_z[slot], &hz[t], sizeof(hz[t]));
+            if (!some_one) continue;
+            const i32x8 mine = (chosen == l), one_on = wt > real(0);
+            one_weight[t] = mine ? (one_on ? wt : f32x8{}) : one_weight[t];
+            one_share[t] = mine ? (one_on ? f32x8{} + real(1) : f32x8{}) : one_share[t];
+            one_hash_x[t] = mine ? hx[t] : one_hash_x[t], one_hash_y[t] = mine ? hy[t] : one_hash_y[t], one_hash_z[t] = mine ? hz[t] : one_hash_z[t];
+        }
+    }
+    if (!some_one) return;
+    for (int slot = 0; slot < 12; ++slot) {
+        f32x8 weight, share;
+        std::memcpy(&weight, d.weight[slot], sizeof(weight)), std::memcpy(&share, d.share[slot], sizeof(share));
+        weight = one_point ? (slot < 3 ? one_weight[slot] : f32x8{}) : weight;
+        share = one_point ? (slot < 3 ? one_share[slot] : f32x8{}) : share;
+        std::memcpy(d.weight[slot], &weight, sizeof(weight)), std::memcpy(d.share[slot], &share, sizeof(share));
+        if (slot >= 3) continue;
+        u32x8 hx, hy, hz;
+        std::memcpy(&hx, d.hash_x[slot], sizeof(hx)), std::memcpy(&hy, d.hash_y[slot], sizeof(hy)), std::memcpy(&hz, d.hash_z[slot], sizeof(hz));
+        hx = one_point ? one_hash_x[slot] : hx, hy = one_point ? one_hash_y[slot] : hy, hz = one_point ? one_hash_z[slot] : hz;
+        std::memcpy(d.hash_x[slot], &hx, sizeof(hx)), std::memcpy(d.hash_y[slot], &hy, sizeof(hy)), std::memcpy(d.hash_z[slot], &hz, sizeof(hz));
+    }
+}
+
+
+// out[v] = glint_grid_sample_pixel(px[v], g, lights[v]) for v < n <= 8, bit for bit (a
+// pixel a lane; tests/unit/test_grid.cpp): each light's set-up (glint_light_lanes_setup with the
+// lane's own N), the vertices of the pixels that draw (glint_lanes_footprint_vertices, no
+// log-normal density), the skip test slot by slot with the pixels in the lanes, then each drawing
+// pixel's draws in glint_grid_sample_pixel's order. The pixels' own vertex arrays are not filled.
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(GLINT_NO_AVX2)
+__attribute__((noinline, target("avx2"))) static void glint_grid_sample_pixels_x8(glint_grid_pixel* px, int n, const glint_grid_params& g,
+                                                                                  const glint_grid_light* lights, glint_grid_estimate* out) {
+    typedef glint_f32x8 f32x8;
+    typedef glint_i32x8 i32x8;
+    typedef glint_u32x8 u32x8;
+    const glint_grid_pixel* q[8];  // lanes n to 7 repeat pixel n - 1 (their lights have E[R] = 0)
+    for (int v = 0; v < 8; ++v) q[v] = px + std::min(v, n - 1);
+    const f32x8 N = {q[0]->N, q[1]->N, q[2]->N, q[3]->N, q[4]->N, q[5]->N, q[6]->N, q[7]->N};
+    glint_light_lanes o;
+    if (!glint_light_lanes_setup(g, lights, n, N, o)) {
+        for (int v = 0; v < n; ++v) out[v] = glint_grid_sample_pixel(px[v], g, lights[v]);
+        return;
+    }
+    glint_light_lanes_results(o, n, out);
+    const int drawing = __builtin_ia32_movmskps256(reinterpret_cast<f32x8>(o.draws));
+    if (drawing == 0) return;
+    glint_lanes_vertices d;
+    glint_lanes_footprint_vertices(d, n, px, g.lod_scale, drawing, g.seed);
+    // The skip test: glint_grid_skip_inputs' bound lane-wise, then each slot's words against its
+    // pixel's corner keys (a slot without a vertex never draws).
+    i32x8 bits[12], any = {};
+    for (int s = 0; s < 12; ++s) {
+        f32x8 share, weight;
+        u32x8 hx;
+        std::memcpy(&share, d.share[s], sizeof(share)), std::memcpy(&weight, d.weight[s], sizeof(weight)), std::memcpy(&hx, d.hash_x[s], sizeof(hx));
+        const f32x8 trials = N * share, zero = {};
+        const f32x8 scale = ((trials > 2.0f) ? trials + 1.0f : zero + 2.0f) * ((weight > 0.0f) ? zero + 1.0001f : zero);
+        i32x8 b = {};
+        for (int j = 0; j < 4; ++j) {
+            u32x8 h = o.key[j] ^ hx;
+            glint_hash_u32_vector(h);
+            const f32x8 below = __builtin_convertvector(reinterpret_cast<i32x8>(h >> 8u), f32x8);  // below 2^24: exact
+            b |= (below < scale * o.p24[j] + 167.77216f) & o.bit[j];                              // 1e-5 2^24
+        }
+        bits[s] = b & (weight > 0.0f);
+        any |= bits[s];
+    }
+    // The draws, lattice point by lattice point (slot 4 t + l) as glint_grid_sample_pixel makes them.
+    const int slot[12] = {0, 4, 8, 1, 5, 9, 2, 6, 10, 3, 7, 11};  // glint_grid_draw_slot(12, k)
+    for (int lanes = __builtin_ia32_movmskps256(reinterpret_cast<f32x8>(o.draws & (any != 0))); lanes != 0; lanes &= lanes - 1) {
+        const int v = __builtin_ctz(static_cast<unsigned>(lanes)), count = d.count[v];
+        glint_grid_estimate& e = out[v];
+        for (int k = 0; k < count; ++k) {
+            const int i = (count == 12) ? slot[k] : k;
+            for (int corners = bits[i][v]; corners != 0; corners &= corners - 1) {
+                const int j = __builtin_ctz(static_cast<unsigned>(corners));
+                e.value += d.weight[i][v] * o.mu[j][v] *
+                           glint_vertex_corner_count(g, N[v] * d.share[i][v], d.hash_x[i][v], d.hash_y[i][v], o.key[j][v], o.corner_p[j][v]) / N[v];
+                ++e.draws;
+            }
+        }
+    }
+}
+#endif
+
+// out[i] = glint_grid_sample_pixel(px[i], g, lights[i]) for i < count, bit for bit: pixel i under
+// its own light, eight pixels at a time where the CPU has AVX2 (float) and the density has no
+// log-normal factor, else one at a time. Batches of one or two go one at a time too.
+GLINT_FN_OUT_OF_LINE void glint_grid_sample_pixels(glint_grid_pixel* px, const glint_grid_params& g, const glint_grid_light* lights, int count,
+                                                   glint_grid_estimate* out) {
+    for (int first = 0; first < count; first += 8) {
+        const int n = (count - first < 8) ? count - first : 8;
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(GLINT_NO_AVX2)
+        if constexpr (!GLINT_DOUBLE) {
+            if (n > 2 && !(g.density_sigma > real(0)) && glint_cpu_avx2()) {
+                glint_grid_sample_pixels_x8(px + first, n, g, lights + first, out + first);
+                continue;
+            }
+        }
+#endif
+        for (int k = 0; k < n; ++k) out[first + k] = glint_grid_sample_pixel(px[first + k], g, lights[first + k]);
     }
 }
 #endif

@@ -301,10 +301,7 @@ struct glint_ibl_lanes {
     real lit[8][8];        // [k][lane]: the lit levels' probabilities (glint_ibl_lit_levels)
     real N[8];
     real total[8];         // the tree root's total
-    int count[8];          // 12 where the lane's pixel draws (its four lattice points' slots), else 0
-    real share[12][8];     // [slot][lane]: the vertices, as glint_grid_vertices holds them
-    real weight[12][8];
-    uint hash_x[12][8], hash_y[12][8], hash_z[12][8];
+    glint_lanes_vertices v;  // the pixels' vertices (glint_lanes_footprint_vertices, grid.glsl)
     real weighted[8][8];   // out, [k][lane]: sum over the vertices of l_t M_k
     int batched[8];        // out: the vertices drawn
     int rest;              // out: bit v set where lane v's pixel has vertices that the pass does not take
@@ -354,15 +351,15 @@ __attribute__((always_inline)) static inline void glint_ibl_lanes_draw_of(GLINT_
     typedef decltype(realx8{} < realx8{}) maskx8;
     realx8 N, total;
     i32x8 count;
-    std::memcpy(&N, d.N, sizeof(N)), std::memcpy(&total, d.total, sizeof(total)), std::memcpy(&count, d.count, sizeof(count));
+    std::memcpy(&N, d.N, sizeof(N)), std::memcpy(&total, d.total, sizeof(total)), std::memcpy(&count, d.v.count, sizeof(count));
     // The slots in the pass, as glint_ibl_level_shares tests them (present, and
     // glint_multinomial_exact_all_applies), and each lane's counts of both.
     const i32x8 all_ones = i32x8{} - 1;
     const i32x8 variant = unbiased ? all_ones : i32x8{};
     realx8 share[12], weight[12];
     u32x8 hash_x[12], hash_y[12], hash_z[12];
-    std::memcpy(share, d.share, sizeof(share)), std::memcpy(weight, d.weight, sizeof(weight));
-    std::memcpy(hash_x, d.hash_x, sizeof(hash_x)), std::memcpy(hash_y, d.hash_y, sizeof(hash_y)), std::memcpy(hash_z, d.hash_z, sizeof(hash_z));
+    std::memcpy(share, d.v.share, sizeof(share)), std::memcpy(weight, d.v.weight, sizeof(weight));
+    std::memcpy(hash_x, d.v.hash_x, sizeof(hash_x)), std::memcpy(hash_y, d.v.hash_y, sizeof(hash_y)), std::memcpy(hash_z, d.v.hash_z, sizeof(hash_z));
     i32x8 batch[12], present_count = {}, batch_count = {};
     realx8 n[12];
     for (int s = 0; s < 12; ++s) {
@@ -430,219 +427,6 @@ void glint_ibl_lanes_draw(GLINT_INOUT(glint_ibl_lanes) d, int T, bool unbiased) 
         case 5: glint_ibl_lanes_draw_of<5>(d, unbiased); break;
         case 6: glint_ibl_lanes_draw_of<6>(d, unbiased); break;
         default: glint_ibl_lanes_draw_of<7>(d, unbiased); break;
-    }
-}
-
-// The lanes' pixels' lattice points ([l] a vector of the eight lanes; weight 0 in a lane that does
-// not draw) and each point's rotation (glint_lattice_rotation).
-struct glint_ibl_lattice_lanes {
-    glint_f32x8 weight[4], cos[4], sin[4];
-    glint_i32x8 lod[4], level[4], bin[4];
-};
-
-// glint_log2 lane-wise, in place (a reference: a vector passed by value to a function not compiled
-// for AVX would change the ABI).
-__attribute__((always_inline)) static inline void glint_lanes_log2(glint_f32x8& x) {
-    typedef glint_f32x8 f32x8;
-    typedef glint_i32x8 i32x8;
-    const f32x8 lo = f32x8{} + GLINT_FLT_MIN_NORMAL, hi = f32x8{} + real(3.40282346638528859812e38);
-    x = (x < lo) ? lo : x;  // GLM's max, then min
-    x = (hi < x) ? hi : x;
-    const glint_u32x8 bits = reinterpret_cast<glint_u32x8>(x);
-    f32x8 m = reinterpret_cast<f32x8>((bits & 0x807fffffu) | 0x3f000000u);  // frexp of a normal x
-    i32x8 e = reinterpret_cast<i32x8>(bits >> 23u) - 126;
-    const i32x8 low = m < real(0.70710678118654752440);
-    m = low ? real(2) * m : m;
-    e = low ? e - 1 : e;
-    const f32x8 f = m - real(1);
-    const f32x8 s = f / (real(2) + f);
-    const f32x8 z = s * s;
-    f32x8 t = f32x8{} + real(1) / real(13);
-    t = real(1) / real(11) + z * t;
-    t = real(1) / real(9) + z * t;
-    t = real(1) / real(7) + z * t;
-    t = real(1) / real(5) + z * t;
-    t = real(1) / real(3) + z * t;
-    t = real(1) + z * t;
-    x = __builtin_convertvector(e, f32x8) + real(2.88539008177792681472) * (s * t);
-}
-
-// glint_footprint_lattice of the eight footprints f[v] (major, minor, angle), lane-wise: the same
-// operations in the same order (glint_log2's reduction by bits, frexp's for normal x; GLM's max and
-// min as the selects (x < y) ? y : x and (y < x) ? y : x; the triangle cases and the prism split
-// as selects), so the same values bit for bit; lanes not in `drawing` get weight 0. One pixel at a
-// time this took about 230 instructions a pixel, a fifth of the IBL estimate's, and its log2f
-// calls another 40; in lanes about 80 (callgrind, glint_frame_loop ibl-rows 4 1; DEVELOPERS.md).
-__attribute__((always_inline)) static inline void glint_ibl_lanes_lattice(const glint_f32x8& major_in, const glint_f32x8& minor_in, const glint_f32x8& angle,
-                                                                         real lod_scale, int drawing, glint_ibl_lattice_lanes& lat) {
-    typedef glint_i32x8 i32x8;
-    typedef glint_f32x8 f32x8;
-    const f32x8 zero = {};
-    // GLM's max(x, y) and min(x, y) as (x < y) ? y : x and (y < x) ? y : x.
-    f32x8 major = (major_in < real(1e-30)) ? zero + real(1e-30) : major_in;
-    const f32x8 major_16 = major / real(16);
-    f32x8 minor = (minor_in < major_16) ? major_16 : minor_in;
-    minor = (minor < real(1e-30)) ? zero + real(1e-30) : minor;
-    f32x8 lod = minor * max(lod_scale, real(1e-30)), rho = major / minor;
-    glint_lanes_log2(lod), glint_lanes_log2(rho);
-    lod = (lod < GLINT_MIN_LOD) ? zero + GLINT_MIN_LOD : lod;
-    lod = (GLINT_MAX_LOD < lod) ? zero + GLINT_MAX_LOD : lod;
-    rho = (rho < real(0)) ? zero : rho;
-    rho = (real(GLINT_MAX_RATIO_LEVEL) < rho) ? zero + real(GLINT_MAX_RATIO_LEVEL) : rho;
-    f32x8 rho_floor = rho;
-    glint_lanes_floor_bounded(rho_floor);
-    i32x8 r0 = __builtin_convertvector(rho_floor, i32x8);
-    r0 = (r0 < GLINT_MAX_RATIO_LEVEL - 1) ? r0 : i32x8{} + (GLINT_MAX_RATIO_LEVEL - 1);
-    const f32x8 tr = rho - __builtin_convertvector(r0, f32x8);
-    f32x8 l0 = lod;
-    glint_lanes_floor_bounded(l0);
-    const f32x8 tl = lod - l0;
-    // The triangle in the (angle, tr) strip: level 0's fan has level 1's four bins.
-    const i32x8 fan = (r0 == 0);
-    const i32x8 lo = r0 * 1024, hi = (r0 + 1) * 1024;
-    const i32x8 n0 = fan ? i32x8{} + 4 : (i32x8{} + 2) << r0;
-    const f32x8 x = angle * __builtin_convertvector(n0, f32x8) / GLINT_PI;
-    f32x8 x_floor = x;
-    glint_lanes_floor_bounded(x_floor);
-    i32x8 k = __builtin_convertvector(x_floor, i32x8);
-    k = (k < n0 - 1) ? k : n0 - 1;
-    const f32x8 fx = x - __builtin_convertvector(k, f32x8);
-    const i32x8 kn = (k + 1 == n0) ? i32x8{} : k + 1;  // the fan's (k + 1) & 3
-    const i32x8 t0 = 2 * k, t1 = 2 * k + 1, t2 = (2 * k + 2 == 2 * n0) ? i32x8{} : 2 * k + 2;
-    const i32x8 case_a = ~fan & (fx < real(0.5) * tr), case_c = ~fan & ~case_a & (fx > real(1) - real(0.5) * tr);
-    const i32x8 case_b = ~fan & ~case_a & ~case_c;
-    const f32x8 gx = real(1) - fx;
-    i32x8 key[3] = {fan ? lo : (case_c ? lo + kn : lo + k), fan ? hi + k : (case_b ? hi + t1 : (case_a ? hi + t0 : hi + t1)),
-                    fan ? hi + kn : (case_b ? lo + kn : (case_a ? hi + t1 : hi + t2))};
-    f32x8 bary[3] = {case_b ? real(1) - fx - real(0.5) * tr : real(1) - tr,
-                     fan ? tr * (real(1) - fx) : (case_b ? tr : (case_a ? tr - real(2) * fx : real(2) * gx)),
-                     fan ? tr * fx : (case_b ? fx - real(0.5) * tr : (case_a ? real(2) * fx : tr - real(2) * gx))};
-    for (int i = 0; i < 3; ++i) bary[i] = (bary[i] < real(0)) ? zero : bary[i];
-    // Sort the three vertices by key (glint_footprint_lattice's three compare-and-swaps).
-    for (int a : {0, 1, 0}) {
-        const int b = a + 1;
-        const i32x8 swap = key[a] > key[b];
-        const i32x8 ka = key[a];
-        const f32x8 ba = bary[a];
-        key[a] = swap ? key[b] : key[a], key[b] = swap ? ka : key[b];
-        bary[a] = swap ? bary[b] : bary[a], bary[b] = swap ? ba : bary[b];
-    }
-    // The prism split: v1 < v2 < v3 at L0 and L0 + 1.
-    const i32x8 L0 = __builtin_convertvector(l0, i32x8);
-    i32x8 level[3], bin[3];
-    for (int i = 0; i < 3; ++i) level[i] = key[i] >> 10, bin[i] = key[i] & 1023;  // key / 1024 for key >= 0
-    const i32x8 first = (tl <= bary[0]), second = ~first & (tl <= bary[0] + bary[1]);
-    const f32x8 w[4] = {first ? bary[0] - tl : bary[0], first ? bary[1] : (second ? bary[0] + bary[1] - tl : bary[1]),
-                        (first | second) ? bary[2] : real(1) - tl, first ? tl : (second ? tl - bary[0] : tl - bary[0] - bary[1])};
-    const i32x8 up = L0 + 1;
-    const i32x8 lods[4] = {first ? L0 : up, (first | second) ? L0 : up, L0, up};
-    const i32x8 last_level = first ? level[0] : (second ? level[1] : level[2]), last_bin = first ? bin[0] : (second ? bin[1] : bin[2]);
-    i32x8 draws = {};
-    for (int v = 0; v < 8; ++v) draws[v] = ((drawing >> v) & 1) != 0 ? -1 : 0;
-    static const vec2* const rotation = glint_lattice_rotation_table();
-    for (int l = 0; l < 4; ++l) {
-        lat.weight[l] = draws ? ((w[l] < real(0)) ? zero : w[l]) : zero;
-        lat.lod[l] = lods[l];
-        lat.level[l] = (l < 3) ? level[l] : last_level;
-        lat.bin[l] = (l < 3) ? bin[l] : last_bin;
-        // glint_lattice_rotation from the table, lane by lane into registers.
-        const i32x8 r = (lat.bin[l] << (GLINT_MAX_RATIO_LEVEL - lat.level[l])) & 31;
-        lat.cos[l] = f32x8{rotation[r[0]].x, rotation[r[1]].x, rotation[r[2]].x, rotation[r[3]].x,
-                           rotation[r[4]].x, rotation[r[5]].x, rotation[r[6]].x, rotation[r[7]].x};
-        lat.sin[l] = f32x8{rotation[r[0]].y, rotation[r[1]].y, rotation[r[2]].y, rotation[r[3]].y,
-                           rotation[r[4]].y, rotation[r[5]].y, rotation[r[6]].y, rotation[r[7]].y};
-    }
-}
-
-// glint_footprint_vertices of the lanes' pixels (no log-normal density) into d's slot arrays,
-// from the pixels' uv and footprints: their lattices (glint_ibl_lanes_lattice), then
-// glint_lattice_triangles_x4's operations with the pixels in the lanes instead of the lattice
-// points, every lattice point in slots 4 t + l, or for a pixel with a lattice_u its chosen point's
-// three vertices in slots 0 to 2 (the same values bit for bit); no pixel's vertex arrays written.
-#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(GLINT_NO_AVX2)
-__attribute__((noinline, target("avx2"))) static
-#else
-__attribute__((noinline)) static
-#endif
-void glint_ibl_lanes_footprint_vertices(GLINT_INOUT(glint_ibl_lanes) d, int n, const glint_grid_pixel* px, real lod_scale, int drawing, uint seed) {
-    typedef glint_u32x8 u32x8;
-    typedef glint_i32x8 i32x8;
-    typedef glint_u64x4 u64x4;
-    typedef glint_f32x8 f32x8;
-    // The pixels' uv and footprints, from scalars in registers (lanes n to 7 repeat pixel n - 1).
-    const glint_grid_pixel* q[8];
-    for (int v = 0; v < 8; ++v) q[v] = px + std::min(v, n - 1);
-    const f32x8 ux = {q[0]->uv.x, q[1]->uv.x, q[2]->uv.x, q[3]->uv.x, q[4]->uv.x, q[5]->uv.x, q[6]->uv.x, q[7]->uv.x};
-    const f32x8 uy = {q[0]->uv.y, q[1]->uv.y, q[2]->uv.y, q[3]->uv.y, q[4]->uv.y, q[5]->uv.y, q[6]->uv.y, q[7]->uv.y};
-    const f32x8 major = {q[0]->f.major, q[1]->f.major, q[2]->f.major, q[3]->f.major, q[4]->f.major, q[5]->f.major, q[6]->f.major, q[7]->f.major};
-    const f32x8 minor = {q[0]->f.minor, q[1]->f.minor, q[2]->f.minor, q[3]->f.minor, q[4]->f.minor, q[5]->f.minor, q[6]->f.minor, q[7]->f.minor};
-    const f32x8 angle = {q[0]->f.angle, q[1]->f.angle, q[2]->f.angle, q[3]->f.angle, q[4]->f.angle, q[5]->f.angle, q[6]->f.angle, q[7]->f.angle};
-    const f32x8 lattice_u = {q[0]->lattice_u, q[1]->lattice_u, q[2]->lattice_u, q[3]->lattice_u,
-                             q[4]->lattice_u, q[5]->lattice_u, q[6]->lattice_u, q[7]->lattice_u};
-    glint_ibl_lattice_lanes lat;
-    glint_ibl_lanes_lattice(major, minor, angle, lod_scale, drawing, lat);
-    // One lattice point (glint_grid_pixel_setup_stochastic's pixels): glint_lattice_choice lane-wise;
-    // its three vertices go to slots 0 to 2 with share 1, as glint_footprint_vertices puts them.
-    const i32x8 one_point = lattice_u >= real(0);
-    const u64x4 any_one = reinterpret_cast<u64x4>(one_point);
-    const bool some_one = (any_one[0] | any_one[1] | any_one[2] | any_one[3]) != 0u;
-    i32x8 chosen = i32x8{} - 1;
-    f32x8 below = {};
-    for (int l = 0; l < 4; ++l) {
-        const i32x8 on = lat.weight[l] > real(0);
-        chosen = (on & ((chosen < 0) | (lattice_u >= below))) ? i32x8{} + l : chosen;
-        below = on ? below + lat.weight[l] : below;
-    }
-    f32x8 one_weight[3] = {}, one_share[3] = {};
-    u32x8 one_hash_x[3] = {}, one_hash_y[3] = {}, one_hash_z[3] = {};
-    for (int v = 0; v < 8; ++v) d.count[v] = ((drawing >> v) & 1) == 0 ? 0 : (one_point[v] != 0 ? 3 : 12);
-    for (int l = 0; l < 4; ++l) {
-        const f32x8 c = lat.cos[l], sn = lat.sin[l], wl = lat.weight[l];
-        const i32x8 lod = lat.lod[l], level = lat.level[l], bin = lat.bin[l];
-        const f32x8 scale_x = reinterpret_cast<f32x8>((-lod - level + 127) << 23), scale_y = reinterpret_cast<f32x8>((-lod + 127) << 23);
-        const f32x8 qx = (c * ux + sn * uy) * scale_x, qy = (-sn * ux + c * uy) * scale_y;
-        f32x8 sx = qx - qy * real(0.577350269189625764509), sy = qy * real(1.15470053837925152902);
-        const f32x8 lo = f32x8{} + real(-1073741824), hi = f32x8{} + real(1073741824);
-        sx = (sx < lo) ? lo : sx, sy = (sy < lo) ? lo : sy;
-        sx = (hi < sx) ? hi : sx, sy = (hi < sy) ? hi : sy;
-        f32x8 ix = __builtin_convertvector(__builtin_convertvector(sx, i32x8), f32x8), iy = __builtin_convertvector(__builtin_convertvector(sy, i32x8), f32x8);
-        ix = (ix > sx) ? ix - real(1) : ix, iy = (iy > sy) ? iy - real(1) : iy;
-        const f32x8 fx = sx - ix, fy = sy - iy;
-        const i32x8 bx = __builtin_convertvector(ix, i32x8), by = __builtin_convertvector(iy, i32x8);
-        const i32x8 u = (!(fx + fy < real(1))) & 1;
-        const f32x8 uf = __builtin_convertvector(u, f32x8);
-        const f32x8 w[3] = {real(1) - fx - fy, uf - fx, uf - fy};
-        const u32x8 key = (reinterpret_cast<u32x8>(lod + 64) | (reinterpret_cast<u32x8>(level) << 8u) | (reinterpret_cast<u32x8>(bin) << 12u)) ^ seed;
-        u32x8 hx[3] = {reinterpret_cast<u32x8>(bx + u), reinterpret_cast<u32x8>(bx + 1 - u), reinterpret_cast<u32x8>(bx + u)};
-        u32x8 hy[3] = {reinterpret_cast<u32x8>(by + u), reinterpret_cast<u32x8>(by + u), reinterpret_cast<u32x8>(by + 1 - u)};
-        u32x8 hz[3] = {key, key, key};
-        for (int t = 0; t < 3; ++t) {
-            glint_pcg3d_vectors(hx[t], hy[t], hz[t]);
-            const f32x8 wt = reinterpret_cast<f32x8>(reinterpret_cast<u32x8>(w[t]) & 0x7fffffffu);  // glint_abs
-            const auto on = (wt > real(0)) & (wl > real(0));
-            const f32x8 weight = on ? wt : f32x8{}, share = on ? wl : f32x8{};
-            const int slot = 4 * t + l;
-            std::memcpy(d.weight[slot], &weight, sizeof(weight)), std::memcpy(d.share[slot], &share, sizeof(share));
-            std::memcpy(d.hash_x[slot], &hx[t], sizeof(hx[t])), std::memcpy(d.hash_y[slot], &hy[t], sizeof(hy[t])), std::memcpy(d.hash_z[slot], &hz[t], sizeof(hz[t]));
-            if (!some_one) continue;
-            const i32x8 mine = (chosen == l), one_on = wt > real(0);
-            one_weight[t] = mine ? (one_on ? wt : f32x8{}) : one_weight[t];
-            one_share[t] = mine ? (one_on ? f32x8{} + real(1) : f32x8{}) : one_share[t];
-            one_hash_x[t] = mine ? hx[t] : one_hash_x[t], one_hash_y[t] = mine ? hy[t] : one_hash_y[t], one_hash_z[t] = mine ? hz[t] : one_hash_z[t];
-        }
-    }
-    if (!some_one) return;
-    for (int slot = 0; slot < 12; ++slot) {
-        f32x8 weight, share;
-        std::memcpy(&weight, d.weight[slot], sizeof(weight)), std::memcpy(&share, d.share[slot], sizeof(share));
-        weight = one_point ? (slot < 3 ? one_weight[slot] : f32x8{}) : weight;
-        share = one_point ? (slot < 3 ? one_share[slot] : f32x8{}) : share;
-        std::memcpy(d.weight[slot], &weight, sizeof(weight)), std::memcpy(d.share[slot], &share, sizeof(share));
-        if (slot >= 3) continue;
-        u32x8 hx, hy, hz;
-        std::memcpy(&hx, d.hash_x[slot], sizeof(hx)), std::memcpy(&hy, d.hash_y[slot], sizeof(hy)), std::memcpy(&hz, d.hash_z[slot], sizeof(hz));
-        hx = one_point ? one_hash_x[slot] : hx, hy = one_point ? one_hash_y[slot] : hy, hz = one_point ? one_hash_z[slot] : hz;
-        std::memcpy(d.hash_x[slot], &hx, sizeof(hx)), std::memcpy(d.hash_y[slot], &hy, sizeof(hy)), std::memcpy(d.hash_z[slot], &hz, sizeof(hz));
     }
 }
 
@@ -765,7 +549,7 @@ GLINT_FN void glint_ibl_sample_pixels(int count, glint_grid_pixel* px, GLINT_IN(
         glint_ibl_lanes d;
         std::memset(d.weighted, 0, sizeof(d.weighted));
         const int drawing = glint_ibl_lanes_setup(d, n, px + first, g, lv, ind + first, e_d + first, d_h, out + first);
-        glint_ibl_lanes_footprint_vertices(d, n, px + first, g.lod_scale, drawing, g.seed);
+        glint_lanes_footprint_vertices(d.v, n, px + first, g.lod_scale, drawing, g.seed);
         if (drawing == 0) continue;
         glint_ibl_lanes_draw(d, K - 1, g.variant == GLINT_BINOMIAL_UNBIASED);
         for (int v = 0; v < n; ++v) {

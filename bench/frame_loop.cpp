@@ -3,6 +3,8 @@
 //   glint_frame_loop point FRAMES          the showcase's 160 x 100 point-light frame, glints on
 //   glint_frame_loop point-smooth FRAMES   the same frame shaded smooth
 //   glint_frame_loop point-stochastic FRAMES  the glint frame on one lattice point per pixel
+//   glint_frame_loop point-rows[-smooth|-stochastic] FRAMES  the same frames a row at a time
+//                                          (render_row: glint::grid_sample_pixels, eight pixels in AVX2 lanes)
 //   glint_frame_loop ibl K FRAMES          glint::ibl_sample on bench/report_ibl.cpp's sphere; prints
 //                                          the frames' mean and least wall time too (without
 //                                          the environment's build), for A/B timing of two builds
@@ -138,18 +140,23 @@ __attribute__((noinline)) float lobe_forest_eval(const glint_bench::forest& f, c
 int main(int argc, char** argv) {
     const char* mode = argc > 1 ? argv[1] : "";
     double sum = 0;
-    if (argc == 3 && (!std::strcmp(mode, "point") || !std::strcmp(mode, "point-smooth") || !std::strcmp(mode, "point-stochastic"))) {
+    const bool rows = !std::strncmp(mode, "point-rows", 10);
+    const char* point_mode = rows ? mode + 10 : mode + 5;  // "", "-smooth" or "-stochastic"
+    if (argc == 3 && !std::strncmp(mode, "point", 5) && (!std::strcmp(point_mode, "") || !std::strcmp(point_mode, "-smooth") || !std::strcmp(point_mode, "-stochastic"))) {
         using namespace glint_examples;
         const camera cam(160, 100);
         for (int frame = 0; frame < std::atoi(argv[2]); ++frame) {
             scene_options opt;
-            opt.smooth = !std::strcmp(mode, "point-smooth");
-            opt.stochastic_lattice = !std::strcmp(mode, "point-stochastic");
+            opt.smooth = !std::strcmp(point_mode, "-smooth");
+            opt.stochastic_lattice = !std::strcmp(point_mode, "-stochastic");
             light_setup ls;
             ls.type = light_type::point;
             shading_counters c;
-            for (int y = 0; y < 100; ++y)
-                for (int x = 0; x < 160; ++x) sum += static_cast<double>(render_pixel(opt, ls, cam, x, y, c).x);
+            glm::vec3 row[160];
+            for (int y = 0; y < 100; ++y) {
+                if (rows) render_row(opt, ls, cam, y, 0, 160, row, c);
+                for (int x = 0; x < 160; ++x) sum += static_cast<double>(rows ? row[x].x : render_pixel(opt, ls, cam, x, y, c).x);
+            }
         }
     } else if (argc == 4 && (!std::strcmp(mode, "ibl") || !std::strcmp(mode, "ibl-stochastic"))) {
         const bool stochastic = !std::strcmp(mode, "ibl-stochastic");
@@ -292,7 +299,7 @@ int main(int argc, char** argv) {
         }
         std::printf("lobe-tree %s: %.0f ns a query (the least of %s passes of %zu)\n", argv[2], least, argv[3], q.size());
     } else {
-        std::fprintf(stderr, "usage: glint_frame_loop point|point-smooth|point-stochastic FRAMES | ibl|ibl-stochastic|ibl-rows|ibl-rows-stochastic|ibl-lookup|ibl-radiance K FRAMES | ibl-pixels K | draw N P | draw-time N P PAIRS | lights K MODE REPS | lobe-tree metal|pyramids PASSES\n");
+        std::fprintf(stderr, "usage: glint_frame_loop point|point-smooth|point-stochastic|point-rows|point-rows-smooth|point-rows-stochastic FRAMES | ibl|ibl-stochastic|ibl-rows|ibl-rows-stochastic|ibl-lookup|ibl-radiance K FRAMES | ibl-pixels K | draw N P | draw-time N P PAIRS | lights K MODE REPS | lobe-tree metal|pyramids PASSES\n");
         return 2;
     }
     std::printf("%s: sum %.9g\n", mode, sum);

@@ -129,14 +129,14 @@ section grid_section(double min_time) {
     for (float cell : slope_cells) add_estimate_timing("grid_slope_" + std::to_string(cell), slope_cell_scene(cell), min_time);
     // --- frames ---------------------------------------------------------------------------
     using namespace glint_examples;
-    const int fw = 160, fh = 100;
+    constexpr int fw = 160, fh = 100;
     const camera cam(fw, fh);
     // Modes: 0 smooth; 1 glints; 2 glints, every footprint sampled; 3 glints switched off (the
     // renderer's smooth path through its glint switch); 4 and 5: glints at ln density 14 with
     // and without the smooth-result gate (where most footprints hold enough microfacets); 6: glints
     // on one lattice point per pixel (scene_options::stochastic_lattice).
     // The rows first, first + step, ... of a frame in a mode.
-    auto frame_rows = [&cam, fw, fh](light_type t, int mode, int first, int step) {
+    auto frame_rows = [&cam](light_type t, int mode, int first, int step) {
         scene_options opt;
         opt.smooth = mode == 0 || mode == 3;
         opt.stochastic_lattice = mode == 6;
@@ -146,8 +146,11 @@ section grid_section(double min_time) {
         ls.type = t;
         shading_counters c;
         float acc = 0;
-        for (int y = first; y < fh; y += step)
-            for (int x = 0; x < fw; ++x) acc += render_pixel(opt, ls, cam, x, y, c).x;
+        vec3 row[fw];
+        for (int y = first; y < fh; y += step) {
+            render_row(opt, ls, cam, y, 0, fw, row, c);  // the glint estimates batched (glint::grid_sample_pixels)
+            for (int x = 0; x < fw; ++x) acc += row[x].x;
+        }
         benchmark::DoNotOptimize(acc);
     };
     // Each frame in round_count rounds (report.hpp), the least time of each; modes 0 and 1 also on

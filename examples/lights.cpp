@@ -8,6 +8,7 @@
 // (glint::grid_pixel_setup with a lattice_u): the same mean and per-pixel variance, cheaper.
 //
 // Bare, it renders the showcase: the sun glinting on the plane and the sphere.
+#include <algorithm>
 #include <atomic>
 #include <cstdint>
 #include <cstdio>
@@ -92,10 +93,15 @@ int main(int argc, char** argv) {
     const std::string mode = std::string(name(s.scene.light)) + " light, " + (s.scene.smooth ? "smooth" : "glints");
     const render_timing t = render_rows(h, "glint_lights: " + mode + ", " + std::to_string(w) + "x" + std::to_string(h), [&](int y) {
         shading_counters c;
-        for (int x = 0; x < w; ++x) {
-            const vec3 L = render_pixel(s.scene, ls, cam, x, y, c);
-            const std::size_t i = 3 * (static_cast<std::size_t>(y) * static_cast<std::size_t>(w) + static_cast<std::size_t>(x));
-            rgb[i] = L.x, rgb[i + 1] = L.y, rgb[i + 2] = L.z;
+        vec3 row[256];
+        for (int x0 = 0; x0 < w; x0 += 256) {  // the glint estimates batched (render_row)
+            const int x1 = std::min(x0 + 256, w);
+            render_row(s.scene, ls, cam, y, x0, x1, row, c);
+            for (int x = x0; x < x1; ++x) {
+                const vec3& L = row[x - x0];
+                const std::size_t i = 3 * (static_cast<std::size_t>(y) * static_cast<std::size_t>(w) + static_cast<std::size_t>(x));
+                rgb[i] = L.x, rgb[i + 1] = L.y, rgb[i + 2] = L.z;
+            }
         }
         draws += c.draws;
     });

@@ -4,6 +4,7 @@
 // microfacet BRDF times glint::modulation of the grid estimate (glint/grid.hpp).
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <string>
@@ -173,12 +174,32 @@ struct shading_counters {
 
 inline vec3 to_local(const hit& h, const vec3& w) { return {glm::dot(w, h.t), glm::dot(w, h.b), glm::dot(w, h.n)}; }
 
-// Radiance towards the eye from hit h (wo: unit vector towards the eye, world).
-inline vec3 shade(const scene_options& opt, const light_setup& ls, const hit& h, const vec3& wo_world, const vec2& duvdx, const vec2& duvdy,
-                  shading_counters& counters, float lattice_u = -1.0f) {
+// A hit's shading in two halves, so that a renderer can batch the glint estimates of many pixels
+// (render_row): shade_begin computes everything but the glint factor, shade_finish adds the
+// specular (times the factor, if any) with its Fresnel terms.
+struct shading_partial {
+    vec3 result{0};          // the radiance without the light's specular
+    float specular = 0;      // the smooth specular without Fresnel (not positive: none)
+    float cos_h = 0;         // dot(wi, h), for the Fresnel terms
+    bool sphere = false;
+    bool glint = false;      // whether specular waits for the factor glint::modulation(e) of the estimate
+    glint::grid_light<float> light{};  // e = grid_sample(px, surface_grid(opt, sphere), light)
+};
+
+// The grid of a hit's surface: lights_grid's seed plus 1 (sphere) or 2 (plane).
+inline glint::grid_params<float> surface_grid(const scene_options& opt, bool sphere) {
+    glint::grid_params<float> g = lights_grid(opt);
+    g.seed += sphere ? 1u : 2u;
+    return g;
+}
+
+// wo_world: unit vector towards the eye.
+inline shading_partial shade_begin(const scene_options& opt, const light_setup& ls, const hit& h, const vec3& wo_world) {
+    shading_partial out;
+    out.sphere = h.sphere;
     const vec2 alpha(opt.roughness);
     const vec3 wo = to_local(h, wo_world);
-    if (!(wo.z > 0)) return vec3(0);
+    if (!(wo.z > 0)) return out;
     // The sky mirrored by the sphere (a smooth ambient term, the same with or without glints).
     vec3 ambient(0);
     if (h.sphere) {
@@ -218,35 +239,49 @@ inline vec3 shade(const scene_options& opt, const light_setup& ls, const hit& h,
             break;
         }
     }
-    vec3 result = h.sphere ? ambient : plane_diffuse / 3.14159265f * irradiance;
-    if (!(wi_c.z > 0) && ls.type == light_type::point) return result;
+    out.result = h.sphere ? ambient : plane_diffuse / 3.14159265f * irradiance;
+    if (!(wi_c.z > 0) && ls.type == light_type::point) return out;
     const vec3 hv = glm::normalize(wi_c + wo);
     const float g2 = glint::smith_g2(glint::ndf::ggx, wi_c, wo, hv, alpha);
-    if (!(g2 > 0)) return result;
-    float specular = 0;  // the smooth specular without Fresnel
+    if (!(g2 > 0)) return out;
     if (ls.type == light_type::point)
-        specular = g2 * glint::ndf_value(glint::ndf::ggx, hv, alpha) * point_scale / (4 * wo.z);
+        out.specular = g2 * glint::ndf_value(glint::ndf::ggx, hv, alpha) * point_scale / (4 * wo.z);
     else
-        specular = g2 * radiance * glm::dot(hv, wi_c) * d_omega / wo.z;
-    if (!(specular > 0)) return result;
+        out.specular = g2 * radiance * glm::dot(hv, wi_c) * d_omega / wo.z;
+    if (!(out.specular > 0)) return out;
+    out.cos_h = glm::dot(wi_c, hv);
     if (!opt.smooth) {
         const float dh = ggx_total_area(opt.roughness);
-        glint::grid_params<float> g = lights_grid(opt);
-        g.seed += h.sphere ? 1u : 2u;
-        const auto light = ls.type == light_type::point ? glint::grid_point_light(glint::ndf::ggx, alpha, dh, hv)
-                                                        : glint::grid_extended_light(std::min(1.0f, d_omega / dh), hv);
-        auto px = glint::grid_pixel_setup(h.uv, duvdx, duvdy, g, lattice_u);  // lattice_u < 0: every lattice point
-        const auto e = glint::grid_sample(px, g, light);
-        counters.draws += static_cast<std::uint64_t>(e.draws);
-        specular *= glint::modulation(e);
+        out.glint = true;
+        out.light = ls.type == light_type::point ? glint::grid_point_light(glint::ndf::ggx, alpha, dh, hv)
+                                                 : glint::grid_extended_light(std::min(1.0f, d_omega / dh), hv);
     }
-    const float c = glm::dot(wi_c, hv);
+    return out;
+}
+
+inline vec3 shade_finish(const shading_partial& s) {
+    vec3 result = s.result;
+    if (!(s.specular > 0)) return result;
     for (int k = 0; k < 3; ++k) {
-        const float f = h.sphere ? glint::fresnel_conductor(silver_eta[k], silver_k[k], c)
-                                 : flake_coverage * glint::fresnel_conductor(flake_eta[k], flake_k[k], c);
-        result[k] += f * specular;
+        const float f = s.sphere ? glint::fresnel_conductor(silver_eta[k], silver_k[k], s.cos_h)
+                                 : flake_coverage * glint::fresnel_conductor(flake_eta[k], flake_k[k], s.cos_h);
+        result[k] += f * s.specular;
     }
     return result;
+}
+
+// Radiance towards the eye from hit h (wo: unit vector towards the eye, world), one pixel at a time.
+inline vec3 shade(const scene_options& opt, const light_setup& ls, const hit& h, const vec3& wo_world, const vec2& duvdx, const vec2& duvdy,
+                  shading_counters& counters, float lattice_u = -1.0f) {
+    shading_partial s = shade_begin(opt, ls, h, wo_world);
+    if (s.glint) {
+        const glint::grid_params<float> g = surface_grid(opt, h.sphere);
+        auto px = glint::grid_pixel_setup(h.uv, duvdx, duvdy, g, lattice_u);  // lattice_u < 0: every lattice point
+        const auto e = glint::grid_sample(px, g, s.light);
+        counters.draws += static_cast<std::uint64_t>(e.draws);
+        s.specular *= glint::modulation(e);
+    }
+    return shade_finish(s);
 }
 
 // The radiance of pixel (x, y).
@@ -295,6 +330,54 @@ inline vec3 render_pixel(const scene_options& opt, const light_setup& ls, const 
     vec2 duvdx, duvdy;
     footprint_derivatives(cam, h, fx, fy, duvdx, duvdy);
     return shade(opt, ls, h, -d, duvdx, duvdy, counters, pixel_lattice_u(opt.stochastic_lattice, x, y, lights_grid(opt).seed));
+}
+
+
+// Pixels x0 .. x1 - 1 of row y into out[0 .. x1 - x0): render_pixel's values bit for bit, with
+// the glint estimates of up to 32 pixels at a time batched per surface through
+// glint::grid_sample_pixels (eight pixels a vector where the CPU has AVX2), as a renderer that
+// shades a tile of pixels would; nothing allocated.
+inline void render_row(const scene_options& opt, const light_setup& ls, const camera& cam, int y, int x0, int x1, vec3* out,
+                       shading_counters& counters) {
+    constexpr int chunk = 32;
+    const glint::grid_params<float> g[2] = {surface_grid(opt, true), surface_grid(opt, false)};  // sphere, plane
+    const std::uint32_t lattice_seed = lights_grid(opt).seed;
+    shading_partial part[chunk];
+    glint::grid_pixel<float> px[2][chunk];
+    glint::grid_light<float> lights[2][chunk];
+    glint::grid_estimate<float> e[chunk];
+    int index[2][chunk];
+    for (int a = x0; a < x1; a += chunk) {
+        const int b = std::min(a + chunk, x1);
+        int count[2] = {0, 0};
+        for (int x = a; x < b; ++x) {
+            shading_partial& s = part[x - a];
+            const float fx = static_cast<float>(x) + 0.5f, fy = static_cast<float>(y) + 0.5f;
+            const vec3 d = cam.ray(fx, fy);
+            const hit h = intersect(cam.eye, d);
+            if (!h.found) {
+                s = shading_partial();
+                s.result = background(d);
+                continue;
+            }
+            s = shade_begin(opt, ls, h, -d);
+            if (!s.glint) continue;
+            vec2 duvdx, duvdy;
+            footprint_derivatives(cam, h, fx, fy, duvdx, duvdy);
+            const int surface = h.sphere ? 0 : 1, k = count[surface]++;
+            px[surface][k] = glint::grid_pixel_setup(h.uv, duvdx, duvdy, g[surface], pixel_lattice_u(opt.stochastic_lattice, x, y, lattice_seed));
+            lights[surface][k] = s.light;
+            index[surface][k] = x - a;
+        }
+        for (int surface = 0; surface < 2; ++surface) {
+            glint::grid_sample_pixels(px[surface], g[surface], lights[surface], static_cast<std::size_t>(count[surface]), e);
+            for (int k = 0; k < count[surface]; ++k) {
+                part[index[surface][k]].specular *= glint::modulation(e[k]);
+                counters.draws += static_cast<std::uint64_t>(e[k].draws);
+            }
+        }
+        for (int x = a; x < b; ++x) out[x - x0] = shade_finish(part[x - a]);
+    }
 }
 
 }  // namespace glint_examples

@@ -261,7 +261,9 @@ section grid_section(double min_time) {
     std::ostringstream t3;
     t3 << "Frame cost of the showcase scene (examples/lights_scene.hpp, " << fw << "x" << fh
        << ", one thread; each frame the least time of " << round_count
-       << " rounds, the frames interleaved): glint shading against smooth shading of the same scene, ln density 5 (the showcase). \"Glints\" uses the "
+       << " rounds, the frames interleaved): glint shading against smooth shading of the same scene, ln density 5 (the showcase). Each row is "
+          "shaded by render_row, which batches the glint estimates of up to 32 pixels per surface through glint::grid_sample_pixels "
+          "(eight pixels a pass in AVX2 lanes; the same values as one pixel at a time, render_pixel). \"Glints\" uses the "
           "smooth-result gate (smooth_tolerance 0.01: footprints whose estimate's relative standard deviation is surely below 1% "
           "return the smooth result without drawing); \"all sampled\" turns the gate off; \"off\" switches glints off. At ln "
           "density 14 most footprints hold enough microfacets for the gate: the last columns show the time it saves. \"One lattice "

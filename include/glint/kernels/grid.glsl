@@ -947,6 +947,21 @@ __attribute__((always_inline, target("avx2"))) static inline bool glint_light_la
     return true;
 }
 
+// The skip test's bits (bit j where the vertex may draw at corner j) of a vertex with first hash
+// word `word` and bound scale `scale` (glint_grid_pixel's skip_scale), lane-wise against each
+// lane's light.
+__attribute__((always_inline, target("avx2"))) static inline glint_i32x8 glint_light_lanes_skip_bits(const glint_light_lanes& o, const glint_u32x8& word,
+                                                                                                     const glint_f32x8& scale) {
+    glint_i32x8 b = {};
+    for (int j = 0; j < 4; ++j) {
+        glint_u32x8 h = o.key[j] ^ word;
+        glint_hash_u32_vector(h);
+        const glint_f32x8 below = __builtin_convertvector(reinterpret_cast<glint_i32x8>(h >> 8u), glint_f32x8);  // below 2^24: exact
+        b |= (below < scale * o.p24[j] + 167.77216f) & o.bit[j];                                                   // 1e-5 2^24
+    }
+    return b;
+}
+
 // The estimates' results before any draw: E[R], and R = E[R] where the smooth result is returned.
 __attribute__((always_inline, target("avx2"))) static inline void glint_light_lanes_results(const glint_light_lanes& o, int count, glint_grid_estimate* out) {
     const glint_f32x8 value = o.smooth ? o.expected : glint_f32x8{};
@@ -974,17 +989,8 @@ __attribute__((noinline, target("avx2"))) static void glint_grid_sample_lights_x
     // The skip test (glint_light_lanes_setup's bound), vertex by vertex against the eight lights.
     i32x8 bits[12], any = {};
     for (int i = 0; i < px.v.count; ++i) {
-        const uint hx = px.v.hash_x[i];
-        const float sc = px.skip_scale[i];
-        i32x8 b = {};
-        for (int j = 0; j < 4; ++j) {
-            u32x8 h = o.key[j] ^ hx;
-            glint_hash_u32_vector(h);
-            const f32x8 below = __builtin_convertvector(reinterpret_cast<i32x8>(h >> 8u), f32x8);  // below 2^24: exact
-            b |= (below < sc * o.p24[j] + 167.77216f) & o.bit[j];                                   // 1e-5 2^24
-        }
-        bits[i] = b;
-        any |= b;
+        bits[i] = glint_light_lanes_skip_bits(o, u32x8{} + px.v.hash_x[i], f32x8{} + px.skip_scale[i]);
+        any |= bits[i];
     }
     // The draws of the lanes that draw (lanes past count have E[R] = 0), in glint_grid_sample_pixel's
     // order: bit k of a lane's `order` is set where the k-th vertex in that order draws somewhere.
@@ -1289,14 +1295,7 @@ __attribute__((noinline, target("avx2"))) static void glint_grid_sample_pixels_x
         std::memcpy(&share, d.share[s], sizeof(share)), std::memcpy(&weight, d.weight[s], sizeof(weight)), std::memcpy(&hx, d.hash_x[s], sizeof(hx));
         const f32x8 trials = N * share, zero = {};
         const f32x8 scale = ((trials > 2.0f) ? trials + 1.0f : zero + 2.0f) * ((weight > 0.0f) ? zero + 1.0001f : zero);
-        i32x8 b = {};
-        for (int j = 0; j < 4; ++j) {
-            u32x8 h = o.key[j] ^ hx;
-            glint_hash_u32_vector(h);
-            const f32x8 below = __builtin_convertvector(reinterpret_cast<i32x8>(h >> 8u), f32x8);  // below 2^24: exact
-            b |= (below < scale * o.p24[j] + 167.77216f) & o.bit[j];                              // 1e-5 2^24
-        }
-        bits[s] = b & (weight > 0.0f);
+        bits[s] = glint_light_lanes_skip_bits(o, hx, scale) & (weight > 0.0f);
         any |= bits[s];
     }
     // The draws, lattice point by lattice point (slot 4 t + l) as glint_grid_sample_pixel makes them.

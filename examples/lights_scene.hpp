@@ -261,7 +261,7 @@ inline shading_partial shade_begin(const scene_options& opt, const light_setup& 
 
 inline vec3 shade_finish(const shading_partial& s) {
     vec3 result = s.result;
-    if (!(s.specular > 0)) return result;
+    if (!s.glint && !(s.specular > 0)) return result;  // a glint's specular is added even where its factor made it 0
     for (int k = 0; k < 3; ++k) {
         const float f = s.sphere ? glint::fresnel_conductor(silver_eta[k], silver_k[k], s.cos_h)
                                  : flake_coverage * glint::fresnel_conductor(flake_eta[k], flake_k[k], s.cos_h);

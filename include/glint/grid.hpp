@@ -186,8 +186,9 @@ void grid_sample_lights(const vec2_t<real>& uv, const vec2_t<real>& duvdx, const
 // count may be 0, nothing allocated. Where the CPU has AVX2 (float) and density_sigma is 0, eight
 // pixels at a time share vector lanes, a pixel a lane: the lights' set-up, the footprints'
 // lattices and vertices and the skip test, so that a pixel costs a fraction of a grid_sample call
-// (kernels/grid.glsl, glint_grid_sample_pixels; docs/grid.md measures it). The pixels' vertex
-// arrays are left as they were (a later grid_sample(px[i], ...) computes them).
+// (kernels/grid.glsl, glint_grid_sample_pixels; docs/grid.md measures it). The lanes leave the
+// pixels' vertex arrays unfilled, the one-at-a-time paths fill them; either way a later
+// grid_sample(px[i], g, light) gives what it would have.
 template <class real>
 void grid_sample_pixels(grid_pixel<real>* px, const grid_params<real>& g, const grid_light<real>* lights, std::size_t count, grid_estimate<real>* out) {
     const auto k = detail::to_kernel(g);

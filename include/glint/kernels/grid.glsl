@@ -1266,7 +1266,8 @@ void glint_lanes_footprint_vertices(glint_lanes_vertices& d, int n, const glint_
 // pixel a lane; tests/unit/test_grid.cpp): each light's set-up (glint_light_lanes_setup with the
 // lane's own N), the vertices of the pixels that draw (glint_lanes_footprint_vertices, no
 // log-normal density), the skip test slot by slot with the pixels in the lanes, then each drawing
-// pixel's draws in glint_grid_sample_pixel's order. The pixels' own vertex arrays are not filled.
+// pixel's draws in glint_grid_sample_pixel's order. The pixels' own vertex arrays are not filled
+// (the single-pixel fallbacks fill them, as glint_grid_sample_pixel does).
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(GLINT_NO_AVX2)
 __attribute__((noinline, target("avx2"))) static void glint_grid_sample_pixels_x8(glint_grid_pixel* px, int n, const glint_grid_params& g,
                                                                                   const glint_grid_light* lights, glint_grid_estimate* out) {
@@ -1318,7 +1319,8 @@ __attribute__((noinline, target("avx2"))) static void glint_grid_sample_pixels_x
 
 // out[i] = glint_grid_sample_pixel(px[i], g, lights[i]) for i < count, bit for bit: pixel i under
 // its own light, eight pixels at a time where the CPU has AVX2 (float) and the density has no
-// log-normal factor, else one at a time. Batches of one or two go one at a time too.
+// log-normal factor, else one at a time. Batches of one or two go one at a time too, as in
+// glint_grid_sample_pixel_lights (measured there for lights, not here for pixels).
 GLINT_FN_OUT_OF_LINE void glint_grid_sample_pixels(glint_grid_pixel* px, const glint_grid_params& g, const glint_grid_light* lights, int count,
                                                    glint_grid_estimate* out) {
     for (int first = 0; first < count; first += 8) {

@@ -89,7 +89,9 @@ __attribute__((noinline)) void glint_ibl_estimate_row(int count, const glm::vec2
                                                       const glint::ibl_indicators<float>* ind, const float* e_d, float d_h, const float* lattice_u,
                                                       glint::ibl_estimate<float>* out) {
     glint::grid_pixel<float> px[160];
-    for (int i = 0; i < count; ++i) px[i] = glint::grid_pixel_setup(uv[i], glm::vec2(1, 0), glm::vec2(0, 1), g, lattice_u[i]);
+    glm::vec2 duvdx[160], duvdy[160];
+    for (int i = 0; i < count; ++i) duvdx[i] = glm::vec2(1, 0), duvdy[i] = glm::vec2(0, 1);
+    glint::grid_pixels_setup(static_cast<std::size_t>(count), uv, duvdx, duvdy, g, lattice_u, px);
     glint::ibl_sample_pixels(count, px, g, env.levels(), ind, e_d, d_h, out);
 }
 

@@ -87,9 +87,10 @@ section ibl_section(double min_time) {
         g.seed = static_cast<std::uint32_t>(it);
         for (int y = first; y < 100; y += step) {
             glint::grid_pixel<float> pixel[160];
+            glm::vec2 uv[160], duvdx[160], duvdy[160];
             glint::ibl_indicators<float> ind[160];
             glint::ibl_estimate<float> est[160];
-            float e_d[160], shade[160];
+            float e_d[160], shade[160], lattice_u[160];
             int count = 0;
             for (int x = 0; x < 160; ++x) {
                 // A sphere seen from afar: normal from the pixel, view along -z.
@@ -107,11 +108,13 @@ section ibl_section(double min_time) {
                 shade[count] = env->albedo(cos_o, sa) * s.radiance.x;
                 ind[count] = s.indicators;
                 e_d[count] = env->visible_area(cos_o, sa);
-                const glm::vec2 uv(static_cast<float>(x), static_cast<float>(y));
-                const float lattice_u = glint_examples::pixel_lattice_u(mode == 2, x, y, g.seed);  // mode 2: one lattice point
-                pixel[count++] = glint::grid_pixel_setup(uv, glm::vec2(1, 0), glm::vec2(0, 1), g, lattice_u);
+                uv[count] = glm::vec2(static_cast<float>(x), static_cast<float>(y));
+                duvdx[count] = glm::vec2(1, 0), duvdy[count] = glm::vec2(0, 1);
+                lattice_u[count++] = glint_examples::pixel_lattice_u(mode == 2, x, y, g.seed);  // mode 2: one lattice point
             }
             if (count == 0) continue;  // smooth
+            // The footprints eight at a time (glint::grid_pixels_setup), then the estimates.
+            glint::grid_pixels_setup(static_cast<std::size_t>(count), uv, duvdx, duvdy, g, lattice_u, pixel);
             glint::ibl_sample_pixels(count, pixel, g, env->levels(), ind, e_d, dh, est);
             for (int i = 0; i < count; ++i) acc += shade[i] * glint::modulation(est[i]);
         }

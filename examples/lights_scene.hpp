@@ -335,15 +335,17 @@ inline vec3 render_pixel(const scene_options& opt, const light_setup& ls, const 
 
 // Pixels x0 .. x1 - 1 of row y into out[0 .. x1 - x0): render_pixel's values bit for bit, with
 // the glint estimates of up to 32 pixels at a time batched per surface through
-// glint::grid_sample_pixels (eight pixels a vector where the CPU has AVX2), as a renderer that
-// shades a tile of pixels would; nothing allocated.
+// glint::grid_pixels_setup and glint::grid_sample_pixels (eight pixels a vector where the CPU has
+// AVX2), as a renderer that shades a tile of pixels would; nothing allocated.
 inline void render_row(const scene_options& opt, const light_setup& ls, const camera& cam, int y, int x0, int x1, vec3* out,
                        shading_counters& counters) {
     constexpr int chunk = 32;
     const glint::grid_params<float> g[2] = {surface_grid(opt, true), surface_grid(opt, false)};  // sphere, plane
     const std::uint32_t lattice_seed = lights_grid(opt).seed;
     shading_partial part[chunk];
-    glint::grid_pixel<float> px[2][chunk];
+    vec2 uv[2][chunk], duvdx[2][chunk], duvdy[2][chunk];
+    float lattice_u[2][chunk];
+    glint::grid_pixel<float> px[chunk];
     glint::grid_light<float> lights[2][chunk];
     glint::grid_estimate<float> e[chunk];
     int index[2][chunk];
@@ -362,15 +364,17 @@ inline void render_row(const scene_options& opt, const light_setup& ls, const ca
             }
             s = shade_begin(opt, ls, h, -d);
             if (!s.glint) continue;
-            vec2 duvdx, duvdy;
-            footprint_derivatives(cam, h, fx, fy, duvdx, duvdy);
             const int surface = h.sphere ? 0 : 1, k = count[surface]++;
-            px[surface][k] = glint::grid_pixel_setup(h.uv, duvdx, duvdy, g[surface], pixel_lattice_u(opt.stochastic_lattice, x, y, lattice_seed));
+            footprint_derivatives(cam, h, fx, fy, duvdx[surface][k], duvdy[surface][k]);
+            uv[surface][k] = h.uv;
+            lattice_u[surface][k] = pixel_lattice_u(opt.stochastic_lattice, x, y, lattice_seed);
             lights[surface][k] = s.light;
             index[surface][k] = x - a;
         }
         for (int surface = 0; surface < 2; ++surface) {
-            glint::grid_sample_pixels(px[surface], g[surface], lights[surface], static_cast<std::size_t>(count[surface]), e);
+            const auto n = static_cast<std::size_t>(count[surface]);
+            glint::grid_pixels_setup(n, uv[surface], duvdx[surface], duvdy[surface], g[surface], lattice_u[surface], px);
+            glint::grid_sample_pixels(px, g[surface], lights[surface], n, e);
             for (int k = 0; k < count[surface]; ++k) {
                 part[index[surface][k]].specular *= glint::modulation(e[k]);
                 counters.draws += static_cast<std::uint64_t>(e[k].draws);

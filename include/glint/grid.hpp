@@ -181,6 +181,19 @@ void grid_sample_lights(const vec2_t<real>& uv, const vec2_t<real>& duvdx, const
     grid_sample_lights(px, g, lights, count, out);
 }
 
+// The footprints of several pixels at once: out[i] = grid_pixel_setup(uv[i], duvdx[i], duvdy[i], g,
+// lattice_u[i]) bit for bit (lattice_u null: every lattice point, as grid_pixel_setup without
+// one), eight footprints at a time in AVX2 lanes where the CPU has them (float). For the batches
+// of grid_sample_pixels and ibl_sample_pixels; nothing allocated.
+template <class real>
+void grid_pixels_setup(std::size_t count, const vec2_t<real>* uv, const vec2_t<real>* duvdx, const vec2_t<real>* duvdy, const grid_params<real>& g,
+                       const real* lattice_u, grid_pixel<real>* out) {
+    const auto k = detail::to_kernel(g);
+    for (std::size_t first = 0; first < count; first += 1u << 20)  // the kernel counts in int
+        detail::glsl::kernels<real>::glint_grid_pixels_setup(static_cast<int>(std::min<std::size_t>(count - first, 1u << 20)), uv + first, duvdx + first,
+                                                             duvdy + first, k, lattice_u ? lattice_u + first : nullptr, out + first);
+}
+
 // Several pixels, each under its own light (a row of pixels under one point light, whose half
 // vector differs from pixel to pixel): out[i] = grid_sample(px[i], g, lights[i]), bit for bit;
 // count may be 0, nothing allocated. Where the CPU has AVX2 (float) and density_sigma is 0, eight

@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <map>
 #include <string>
@@ -525,6 +526,59 @@ void check_light_batches() {
 TEST_CASE("a list of lights on one pixel (eight a pass in AVX2 lanes) gives exactly grid_sample per light, in float and double") {
     check_light_batches<float>();
     check_light_batches<double>();
+}
+
+namespace {
+
+// The footprints of a batch (glint_grid_pixels_setup: eight a pass in AVX2 lanes where the CPU has
+// them, in float) against grid_pixel_setup one pixel at a time, bit for bit (the footprint's four
+// numbers, N, lattice_u, uv): derivatives of magnitudes 2^-40 to 2^40 at every angle, degenerate
+// (parallel, zero, -0) and rotated pairs (a - c = 0 = b: the angle's atan2(0, 0)), lattice_u from
+// -0.1 to 1.1 in every third pixel and none (a null pointer) in every fifth batch, batches of 1 to
+// 23 pixels. Returns {pixels, differing}.
+template <class real>
+std::array<std::size_t, 2> pixels_setup_mismatches() {
+    using vec2 = glint::vec2_t<real>;
+    std::array<std::size_t, 2> n = {0, 0};
+    glint::grid_params<real> g;
+    g.log_density = real(5);
+    for (std::uint32_t batch = 0; batch < 8000; ++batch) {
+        const std::size_t count = 1 + batch % 23;
+        std::vector<vec2> uv, dx, dy;
+        std::vector<real> lu;
+        for (std::uint32_t k = 0; k < count; ++k) {
+            auto r = [&](std::uint32_t salt) { return glint::unit_from_bits<real>(glint::pcg3d(glm::uvec3(batch, k, salt)).x); };
+            const real scale = std::exp2(real(-40) + real(80) * r(1));
+            vec2 a(r(2) * 2 - 1, r(3) * 2 - 1), b(r(4) * 2 - 1, r(5) * 2 - 1);
+            if (k % 7 == 1) b = a * (r(6) * 2 - 1);  // parallel: zero area
+            if (k % 11 == 2) a = vec2(0), b = vec2(0);
+            if (k % 13 == 3) b = vec2(-a.y, a.x);  // round: a - c = 0 = b
+            if (k % 17 == 4) a.x = real(-0.0);
+            uv.push_back(vec2(real(100) * r(7), real(100) * r(8)));
+            dx.push_back(a * scale), dy.push_back(b * scale);
+            lu.push_back(k % 3 == 0 ? real(1.2) * r(9) - real(0.1) : real(-1));
+        }
+        const bool no_u = batch % 5 == 4;
+        std::vector<glint::grid_pixel<real>> batched(count);
+        glint::grid_pixels_setup(count, uv.data(), dx.data(), dy.data(), g, no_u ? nullptr : lu.data(), batched.data());
+        for (std::size_t k = 0; k < count; ++k) {
+            const auto one = no_u ? glint::grid_pixel_setup(uv[k], dx[k], dy[k], g) : glint::grid_pixel_setup(uv[k], dx[k], dy[k], g, lu[k]);
+            const auto& b = batched[k];
+            ++n[0];
+            n[1] += std::memcmp(&one.f, &b.f, sizeof(one.f)) != 0 || std::memcmp(&one.N, &b.N, sizeof(one.N)) != 0 ||
+                    std::memcmp(&one.lattice_u, &b.lattice_u, sizeof(one.lattice_u)) != 0 || one.uv != b.uv || b.ready || b.v.count != 0;
+        }
+    }
+    return n;
+}
+
+}  // namespace
+
+TEST_CASE("a batch of footprints (eight a pass in AVX2 lanes) gives exactly grid_pixel_setup per pixel, in float and double") {
+    const auto f = pixels_setup_mismatches<float>(), d = pixels_setup_mismatches<double>();
+    MESSAGE("float: " << f[0] << " pixels, " << f[1] << " differ from grid_pixel_setup; double: " << d[0] << ", " << d[1] << " differ");
+    CHECK(f[1] == 0u);
+    CHECK(d[1] == 0u);
 }
 
 namespace {

@@ -1262,6 +1262,95 @@ void glint_lanes_footprint_vertices(glint_lanes_vertices& d, int n, const glint_
 }
 
 
+// glint_grid_pixel_setup_stochastic for pixels 0 .. n - 1 (n <= 8; u < 0: every lattice point),
+// their footprints lane-wise: glint_footprint_from_derivatives' and glint_atan2's operations in
+// the same order (GLM's abs, max and min as x >= 0 ? x : -x, (x < y) ? y : x and (y < x) ? y : x;
+// both sides of glint_atan2's selects computed), the same values bit for bit. One pixel at a time
+// the footprint is a chain of two square roots and two divisions.
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(GLINT_NO_AVX2)
+__attribute__((noinline, target("avx2"))) static void glint_grid_pixels_setup_x8(int n, const vec2* uv, const vec2* duvdx, const vec2* duvdy,
+                                                                                 const glint_grid_params& g, const real* lattice_u, glint_grid_pixel* out) {
+    typedef glint_f32x8 f32x8;
+    typedef glint_i32x8 i32x8;
+    int at[8];
+    for (int v = 0; v < 8; ++v) at[v] = std::min(v, n - 1);  // lanes n to 7 repeat pixel n - 1
+    const f32x8 xx = {duvdx[at[0]].x, duvdx[at[1]].x, duvdx[at[2]].x, duvdx[at[3]].x, duvdx[at[4]].x, duvdx[at[5]].x, duvdx[at[6]].x, duvdx[at[7]].x};
+    const f32x8 xy = {duvdx[at[0]].y, duvdx[at[1]].y, duvdx[at[2]].y, duvdx[at[3]].y, duvdx[at[4]].y, duvdx[at[5]].y, duvdx[at[6]].y, duvdx[at[7]].y};
+    const f32x8 yx = {duvdy[at[0]].x, duvdy[at[1]].x, duvdy[at[2]].x, duvdy[at[3]].x, duvdy[at[4]].x, duvdy[at[5]].x, duvdy[at[6]].x, duvdy[at[7]].x};
+    const f32x8 yy = {duvdy[at[0]].y, duvdy[at[1]].y, duvdy[at[2]].y, duvdy[at[3]].y, duvdy[at[4]].y, duvdy[at[5]].y, duvdy[at[6]].y, duvdy[at[7]].y};
+    const f32x8 zero = {};
+    // glint_footprint_from_derivatives
+    const f32x8 a = xx * xx + yx * yx, b = xx * xy + yx * yy, c = xy * xy + yy * yy;
+    f32x8 det = xx * yy - xy * yx;
+    det = (det >= 0.0f) ? det : -det;
+    const f32x8 half_diff = 0.5f * (a - c);
+    const f32x8 l2 = 0.5f * (a + c) + __builtin_ia32_sqrtps256(half_diff * half_diff + b * b);
+    const f32x8 major = __builtin_ia32_sqrtps256(l2), minor = (l2 > 0.0f) ? det / major : zero;
+    // glint_atan2(2 b, a - c)
+    const f32x8 y = 2.0f * b, x = a - c;
+    const f32x8 ax = (x >= 0.0f) ? x : -x, ay = (y >= 0.0f) ? y : -y;
+    const f32x8 hi = (ax < ay) ? ay : ax, lo = (ay < ax) ? ay : ax;
+    const i32x8 finite = (hi > 0.0f) & (hi < 3.4e38f);
+    const f32x8 t = lo / hi;
+    const i32x8 reduce = t > 0.267949192431122706473f;  // tan(pi / 12)
+    const float k = 0.577350269189625764509f;            // 1 / sqrt(3)
+    const f32x8 r = reduce ? (t - k) / (1.0f + t * k) : t;
+    // glint_atan_reduced
+    const f32x8 z = r * r;
+    f32x8 sum = zero;
+    sum = 1.0f / 13.0f - z * sum;
+    sum = 1.0f / 11.0f - z * sum;
+    sum = 1.0f / 9.0f - z * sum;
+    sum = 1.0f / 7.0f - z * sum;
+    sum = 1.0f / 5.0f - z * sum;
+    sum = 1.0f / 3.0f - z * sum;
+    sum = 1.0f - z * sum;
+    f32x8 atan = (reduce ? zero + GLINT_PI / 6.0f : zero) + r * sum;
+    atan = (ay > ax) ? GLINT_PI / 2.0f - atan : atan;
+    atan = (x < 0.0f) ? GLINT_PI - atan : atan;
+    atan = (y < 0.0f) ? -atan : atan;
+    atan = finite ? atan : zero;
+    f32x8 angle = 0.5f * atan;
+    angle = (angle < 0.0f) ? angle + GLINT_PI : angle;
+    angle = (angle >= GLINT_PI) ? zero : angle;
+    // glint_footprint_count, its exp once
+    const float density = exp(clamp(g.log_density, -80.0f, 80.0f));
+    f32x8 N = density * det;
+    N = (1e30f < N) ? zero + 1e30f : N;
+    for (int v = 0; v < n; ++v) {
+        glint_grid_pixel& px = out[v];
+        px.uv = uv[v];
+        px.f.area = det[v], px.f.minor = minor[v], px.f.major = major[v], px.f.angle = angle[v];
+        px.N = N[v];
+        const real u = lattice_u ? lattice_u[v] : real(-1);
+        px.lattice_u = (u < real(0)) ? real(-1) : min(u, real(0.99999994));  // glint_grid_pixel_setup_stochastic
+        px.ready = false;
+        px.v.count = 0;
+    }
+}
+#endif
+
+// out[i] = glint_grid_pixel_setup_stochastic(uv[i], duvdx[i], duvdy[i], g, u) for i < count, u =
+// lattice_u[i] or, where lattice_u is null, -1 (every lattice point): bit for bit, eight
+// footprints at a time in AVX2 lanes where the CPU has them (float).
+GLINT_FN_OUT_OF_LINE void glint_grid_pixels_setup(int count, const vec2* uv, const vec2* duvdx, const vec2* duvdy, const glint_grid_params& g,
+                                                  const real* lattice_u, glint_grid_pixel* out) {
+    for (int first = 0; first < count; first += 8) {
+        const int n = (count - first < 8) ? count - first : 8;
+        const real* u = lattice_u ? lattice_u + first : nullptr;
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(GLINT_NO_AVX2)
+        if constexpr (!GLINT_DOUBLE) {
+            if (glint_cpu_avx2()) {
+                glint_grid_pixels_setup_x8(n, uv + first, duvdx + first, duvdy + first, g, u, out + first);
+                continue;
+            }
+        }
+#endif
+        for (int k = 0; k < n; ++k)
+            out[first + k] = glint_grid_pixel_setup_stochastic(uv[first + k], duvdx[first + k], duvdy[first + k], g, u ? u[k] : real(-1));
+    }
+}
+
 // out[v] = glint_grid_sample_pixel(px[v], g, lights[v]) for v < n <= 8, bit for bit (a
 // pixel a lane; tests/unit/test_grid.cpp): each light's set-up (glint_light_lanes_setup with the
 // lane's own N), the vertices of the pixels that draw (glint_lanes_footprint_vertices, no

@@ -1213,6 +1213,20 @@ void glint_lanes_footprint_vertices(glint_lanes_vertices& d, int n, const glint_
     for (int v = 0; v < 8; ++v) d.count[v] = ((drawing >> v) & 1) == 0 ? 0 : (one_point[v] != 0 ? 3 : 12);
     for (int l = 0; l < 4; ++l) {
         const f32x8 c = lat.cos[l], sn = lat.sin[l], wl = lat.weight[l];
+        // A lattice point that no lane's footprint weighs (an isotropic footprint's second ratio
+        // level) has no vertices to draw: zero weights, shares and words, no triangle or hashes.
+        // In the IBL's K = 4 frame (glint_frame_loop ibl-rows 4) half the lattice points: 9.10M to
+        // 8.58M instructions in the estimates, the least frame 1555-1568 to 1487-1499 us.
+        const u64x4 weighed = reinterpret_cast<u64x4>(wl > real(0));
+        if ((weighed[0] | weighed[1] | weighed[2] | weighed[3]) == 0u) {
+            const u32x8 none = {};
+            for (int t = 0; t < 3; ++t) {
+                const int slot = 4 * t + l;
+                std::memcpy(d.weight[slot], &none, sizeof(none)), std::memcpy(d.share[slot], &none, sizeof(none));
+                std::memcpy(d.hash_x[slot], &none, sizeof(none)), std::memcpy(d.hash_y[slot], &none, sizeof(none)), std::memcpy(d.hash_z[slot], &none, sizeof(none));
+            }
+            continue;
+        }
         const i32x8 lod = lat.lod[l], level = lat.level[l], bin = lat.bin[l];
         const f32x8 scale_x = reinterpret_cast<f32x8>((-lod - level + 127) << 23), scale_y = reinterpret_cast<f32x8>((-lod + 127) << 23);
         const f32x8 qx = (c * ux + sn * uy) * scale_x, qy = (-sn * ux + c * uy) * scale_y;

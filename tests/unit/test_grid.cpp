@@ -6,6 +6,8 @@
 // batches of pixels in AVX2 lanes).
 #include <doctest/doctest.h>
 
+#include "../support/lanes_paths.hpp"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -328,51 +330,53 @@ TEST_CASE("grid: the skip test never changes R: grid_sample equals R from its de
 // without the skip test. That the comparison sees a difference: the same masks with one corner's p
 // doubled differ in many pixels.
 TEST_CASE("grid: the skip test's AVX2 masks equal the portable loops' bit for bit") {
-    const bool avx2 = K::glint_cpu_avx2();
-    MESSAGE("AVX2 masks: " << std::string(avx2 ? "compared" : "not compared (a CPU without AVX2, or a build without the AVX2 path): the portable loops against themselves"));
-    auto same_masks = [](const K::glint_draw_masks& a, const K::glint_draw_masks& b) {
-        bool same = a.any == b.any;
-        for (int v = 0; v < 12; ++v) same = same && a.bits[v] == b.bits[v];
-        return same;
-    };
-    int pixels = 0, differ = 0, set_bits = 0, clear_bits = 0, wrong_caught = 0;
-    for (std::uint32_t i = 0; i < 3000; ++i) {
-        const glm::vec2 r1 = random_unit(i, 61), r2 = random_unit(i, 62), r3 = random_unit(i, 63), r4 = random_unit(i, 64);
-        glint::grid_params<float> gp;
-        gp.log_density = -2.0f + 11.0f * r1.x;
-        gp.density_sigma = (i % 5 == 4) ? 0.5f : 0.0f;
-        gp.seed = i;
-        const auto g = glint::detail::to_kernel(gp);
-        glm::vec2 dx, dy;
-        footprint(0.05f + 2.0f * r1.y, 1.0f + 15.0f * r2.x, 3.14159265f * r2.y, dx, dy);
-        auto px = glint::grid_pixel_setup(100.0f * r3, dx, dy, gp, (i % 2) ? r4.x : -1.0f);
-        K::glint_grid_pixel_vertices(px, g);
-        std::uint32_t key[4];
-        float p[4];
-        int live = 0;
-        for (int j = 0; j < 4; ++j) {
-            const glm::vec2 r = random_unit(i, 70 + static_cast<std::uint32_t>(j));
-            key[j] = glint::pcg3d(glm::uvec3(i, static_cast<std::uint32_t>(j), 0x5eu)).x;
-            p[j] = (r.x < 0.1f) ? 0.0f : std::pow(10.0f, -5.0f + 4.7f * r.y);
-            live |= (r.x < 0.9f) ? (1 << j) : 0;
+    glint_test::for_each_lanes_path([&](int) {
+        const bool avx2 = K::glint_cpu_avx2();
+        MESSAGE("AVX2 masks: " << std::string(avx2 ? "compared" : "not compared (a CPU without AVX2, or a build without the AVX2 path): the portable loops against themselves"));
+        auto same_masks = [](const K::glint_draw_masks& a, const K::glint_draw_masks& b) {
+            bool same = a.any == b.any;
+            for (int v = 0; v < 12; ++v) same = same && a.bits[v] == b.bits[v];
+            return same;
+        };
+        int pixels = 0, differ = 0, set_bits = 0, clear_bits = 0, wrong_caught = 0;
+        for (std::uint32_t i = 0; i < 3000; ++i) {
+            const glm::vec2 r1 = random_unit(i, 61), r2 = random_unit(i, 62), r3 = random_unit(i, 63), r4 = random_unit(i, 64);
+            glint::grid_params<float> gp;
+            gp.log_density = -2.0f + 11.0f * r1.x;
+            gp.density_sigma = (i % 5 == 4) ? 0.5f : 0.0f;
+            gp.seed = i;
+            const auto g = glint::detail::to_kernel(gp);
+            glm::vec2 dx, dy;
+            footprint(0.05f + 2.0f * r1.y, 1.0f + 15.0f * r2.x, 3.14159265f * r2.y, dx, dy);
+            auto px = glint::grid_pixel_setup(100.0f * r3, dx, dy, gp, (i % 2) ? r4.x : -1.0f);
+            K::glint_grid_pixel_vertices(px, g);
+            std::uint32_t key[4];
+            float p[4];
+            int live = 0;
+            for (int j = 0; j < 4; ++j) {
+                const glm::vec2 r = random_unit(i, 70 + static_cast<std::uint32_t>(j));
+                key[j] = glint::pcg3d(glm::uvec3(i, static_cast<std::uint32_t>(j), 0x5eu)).x;
+                p[j] = (r.x < 0.1f) ? 0.0f : std::pow(10.0f, -5.0f + 4.7f * r.y);
+                live |= (r.x < 0.9f) ? (1 << j) : 0;
+            }
+            const bool skip_test = i % 7 != 6;
+            const auto fast = K::glint_skip_test_masks(px, key, p, live, skip_test);
+            const auto portable = K::glint_skip_test_masks_inline(px, key, p, live, skip_test);
+            for (int v = 0; v < px.v.count; ++v)
+                for (int j = 0; j < 4; ++j) ((portable.bits[v] >> j) & 1 ? set_bits : clear_bits) += 1;
+            differ += !same_masks(fast, portable);
+            ++pixels;
+            float doubled[4] = {p[0], p[1], p[2], p[3]};
+            doubled[i % 4] = std::min(1.0f, 2.0f * p[i % 4]);
+            wrong_caught += !same_masks(K::glint_skip_test_masks(px, key, doubled, live, skip_test), portable);
         }
-        const bool skip_test = i % 7 != 6;
-        const auto fast = K::glint_skip_test_masks(px, key, p, live, skip_test);
-        const auto portable = K::glint_skip_test_masks_inline(px, key, p, live, skip_test);
-        for (int v = 0; v < px.v.count; ++v)
-            for (int j = 0; j < 4; ++j) ((portable.bits[v] >> j) & 1 ? set_bits : clear_bits) += 1;
-        differ += !same_masks(fast, portable);
-        ++pixels;
-        float doubled[4] = {p[0], p[1], p[2], p[3]};
-        doubled[i % 4] = std::min(1.0f, 2.0f * p[i % 4]);
-        wrong_caught += !same_masks(K::glint_skip_test_masks(px, key, doubled, live, skip_test), portable);
-    }
-    MESSAGE(pixels << " pixels, " << differ << " with other masks; vertex-corner bits set " << set_bits << ", clear " << clear_bits
-                   << "; pixels where one corner's p doubled changes the masks: " << wrong_caught);
-    CHECK(differ == 0);
-    CHECK(set_bits > 1000);
-    CHECK(clear_bits > 1000);
-    CHECK(wrong_caught > 100);
+        MESSAGE(pixels << " pixels, " << differ << " with other masks; vertex-corner bits set " << set_bits << ", clear " << clear_bits
+                       << "; pixels where one corner's p doubled changes the masks: " << wrong_caught);
+        CHECK(differ == 0);
+        CHECK(set_bits > 1000);
+        CHECK(clear_bits > 1000);
+        CHECK(wrong_caught > 100);
+    });
 }
 
 TEST_CASE("grid: finite and non-negative on hard inputs: zero and huge footprints, grazing and horizon half vectors, roughness 1e-4, extreme densities") {
@@ -524,8 +528,10 @@ void check_light_batches() {
 }  // namespace
 
 TEST_CASE("a list of lights on one pixel (eight a pass in AVX2 lanes) gives exactly grid_sample per light, in float and double") {
-    check_light_batches<float>();
-    check_light_batches<double>();
+    glint_test::for_each_lanes_path([&](int) {
+        check_light_batches<float>();
+        check_light_batches<double>();
+    });
 }
 
 namespace {
@@ -575,10 +581,12 @@ std::array<std::size_t, 2> pixels_setup_mismatches() {
 }  // namespace
 
 TEST_CASE("a batch of footprints (eight a pass in AVX2 lanes) gives exactly grid_pixel_setup per pixel, in float and double") {
-    const auto f = pixels_setup_mismatches<float>(), d = pixels_setup_mismatches<double>();
-    MESSAGE("float: " << f[0] << " pixels, " << f[1] << " differ from grid_pixel_setup; double: " << d[0] << ", " << d[1] << " differ");
-    CHECK(f[1] == 0u);
-    CHECK(d[1] == 0u);
+    glint_test::for_each_lanes_path([&](int) {
+        const auto f = pixels_setup_mismatches<float>(), d = pixels_setup_mismatches<double>();
+        MESSAGE("float: " << f[0] << " pixels, " << f[1] << " differ from grid_pixel_setup; double: " << d[0] << ", " << d[1] << " differ");
+        CHECK(f[1] == 0u);
+        CHECK(d[1] == 0u);
+    });
 }
 
 namespace {
@@ -641,13 +649,15 @@ std::array<std::size_t, 3> pixel_batch_mismatches() {
 }  // namespace
 
 TEST_CASE("a batch of pixels under their own lights (eight a pass in AVX2 lanes) gives exactly grid_sample per pixel, in float and double") {
-    const auto f = pixel_batch_mismatches<float>(), d = pixel_batch_mismatches<double>();
-    MESSAGE("float: " << f[0] << " pixels (" << f[1] << " with draws), " << f[2] << " differ from grid_sample; double: " << d[0] << " ("
-                      << d[1] << "), " << d[2] << " differ");
-    for (const auto& n : {f, d}) {
-        CHECK(n[1] > n[0] / 10);  // the comparison covers the draws, not only the gates
-        CHECK(n[2] == 0u);
-    }
+    glint_test::for_each_lanes_path([&](int) {
+        const auto f = pixel_batch_mismatches<float>(), d = pixel_batch_mismatches<double>();
+        MESSAGE("float: " << f[0] << " pixels (" << f[1] << " with draws), " << f[2] << " differ from grid_sample; double: " << d[0] << " ("
+                          << d[1] << "), " << d[2] << " differ");
+        for (const auto& n : {f, d}) {
+            CHECK(n[1] > n[0] / 10);  // the comparison covers the draws, not only the gates
+            CHECK(n[2] == 0u);
+        }
+    });
 }
 
 TEST_CASE("the grid's bounded floor equals std::floor over its range, in float and double") {
@@ -771,14 +781,16 @@ std::pair<long, long> lattice_triangles_mismatches(bool skew) {
 }  // namespace
 
 TEST_CASE("the four lattice points' triangles at once (C++) equal the scalar rotation and triangle grid bit for bit, in float and double") {
-    const auto f = lattice_triangles_mismatches<float>(false), d = lattice_triangles_mismatches<double>(false);
-    const auto f_skew = lattice_triangles_mismatches<float>(true), d_skew = lattice_triangles_mismatches<double>(true);
-    MESSAGE("float: " << f.first << " lattice points, " << f.second << " differ; double: " << d.first << ", " << d.second
-                      << "; with the scalar path's u one ulp off: " << f_skew.second << " and " << d_skew.second << " differ");
-    CHECK(f.second == 0);
-    CHECK(d.second == 0);
-    CHECK(f_skew.second > 1000);
-    CHECK(d_skew.second > 1000);
+    glint_test::for_each_lanes_path([&](int) {
+        const auto f = lattice_triangles_mismatches<float>(false), d = lattice_triangles_mismatches<double>(false);
+        const auto f_skew = lattice_triangles_mismatches<float>(true), d_skew = lattice_triangles_mismatches<double>(true);
+        MESSAGE("float: " << f.first << " lattice points, " << f.second << " differ; double: " << d.first << ", " << d.second
+                          << "; with the scalar path's u one ulp off: " << f_skew.second << " and " << d_skew.second << " differ");
+        CHECK(f.second == 0);
+        CHECK(d.second == 0);
+        CHECK(f_skew.second > 1000);
+        CHECK(d_skew.second > 1000);
+    });
 }
 
 namespace {

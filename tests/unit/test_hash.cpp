@@ -1,6 +1,8 @@
 // PCG3D and the uniform variates built on it.
 #include <doctest/doctest.h>
 
+#include "../support/lanes_paths.hpp"
+
 #include <algorithm>
 #include <cstdint>
 #include <cstring>
@@ -87,16 +89,18 @@ void check_pcg3d_many(Many many) {
 }
 
 TEST_CASE("C++'s batched pcg3d (four or eight words at once) equals the reference word by word") {
-    using K = glint::detail::glsl::kernels<float>;
-    using u32 = std::uint32_t;
-    // Eight words at once compiled for the baseline target (two vectors of four), on any CPU...
-    check_pcg3d_many([](const u32* x, const u32* y, const u32* z, int n, u32* hx, u32* hy, u32* hz) { K::glint_pcg3d_lanes<8>(x, y, z, n, hx, hy, hz); });
-    // ... and for AVX2 (GCC on x86-64), run where the CPU has it, as glint_pcg3d_many runs it;
-    // elsewhere glint_pcg3d_many hashes one word at a time.
-    MESSAGE("eight words at once with AVX2: " << std::string(K::glint_cpu_avx2() ? "run" : "not run (a CPU without AVX2, or a build without the AVX2 path)"));
-    if (K::glint_cpu_avx2())
-        check_pcg3d_many([](const u32* x, const u32* y, const u32* z, int n, u32* hx, u32* hy, u32* hz) { K::glint_pcg3d_many_x8(x, y, z, n, hx, hy, hz); });
-    check_pcg3d_many([](const u32* x, const u32* y, const u32* z, int n, u32* hx, u32* hy, u32* hz) { K::glint_pcg3d_many(x, y, z, n, hx, hy, hz); });
+    glint_test::for_each_lanes_path([&](int) {
+        using K = glint::detail::glsl::kernels<float>;
+        using u32 = std::uint32_t;
+        // Eight words at once compiled for the baseline target (two vectors of four), on any CPU...
+        check_pcg3d_many([](const u32* x, const u32* y, const u32* z, int n, u32* hx, u32* hy, u32* hz) { K::glint_pcg3d_lanes<8>(x, y, z, n, hx, hy, hz); });
+        // ... and for AVX2 (GCC on x86-64), run where the CPU has it, as glint_pcg3d_many runs it;
+        // elsewhere glint_pcg3d_many hashes one word at a time.
+        MESSAGE("eight words at once with AVX2: " << std::string(K::glint_cpu_avx2() ? "run" : "not run (a CPU without AVX2, or a build without the AVX2 path)"));
+        if (K::glint_cpu_avx2())
+            check_pcg3d_many([](const u32* x, const u32* y, const u32* z, int n, u32* hx, u32* hy, u32* hz) { K::glint_pcg3d_many_x8(x, y, z, n, hx, hy, hz); });
+        check_pcg3d_many([](const u32* x, const u32* y, const u32* z, int n, u32* hx, u32* hy, u32* hz) { K::glint_pcg3d_many(x, y, z, n, hx, hy, hz); });
+    });
 }
 
 TEST_CASE("pcg3d is injective on a 2^16-point lattice of counters") {

@@ -1,6 +1,8 @@
 // Multinomial sampling: conservation, non-negative counts, K = 2..8, every variant, hard inputs.
 #include <doctest/doctest.h>
 
+#include "../support/lanes_paths.hpp"
+
 #include <cmath>
 #include <numeric>
 #include <string>
@@ -320,14 +322,16 @@ void check_lane_group_pass(Pass pass) {
 }
 
 TEST_CASE("C++'s four and eight lane groups at once give each group the counts of its own one-group pass") {
-    using MF = glint::detail::glsl::kernels<float>;
-    check_lane_group_pass<4>([](auto&&... a) { return MF::glint_multinomial_exact_all_groups_x4(a...); });
-    // The eight-group pass compiled for the baseline target (two vectors of four), on any CPU...
-    check_lane_group_pass<8>([](auto&&... a) { return MF::glint_multinomial_exact_all_groups<8>(a...); });
-    // ... and for AVX2, where glint_multinomial_exact_all_weighted runs it (the CPU has AVX2).
-    MESSAGE("eight-group pass with AVX2: " << std::string(MF::glint_cpu_avx2() ? "run" : "not run: not used here (a CPU without AVX2, or a build without the AVX2 path)"));
-    if (MF::glint_cpu_avx2())
-        check_lane_group_pass<8>([](auto&&... a) { return MF::glint_multinomial_exact_all_groups_x8(a...); });
+    glint_test::for_each_lanes_path([&](int) {
+        using MF = glint::detail::glsl::kernels<float>;
+        check_lane_group_pass<4>([](auto&&... a) { return MF::glint_multinomial_exact_all_groups_x4(a...); });
+        // The eight-group pass compiled for the baseline target (two vectors of four), on any CPU...
+        check_lane_group_pass<8>([](auto&&... a) { return MF::glint_multinomial_exact_all_groups<8>(a...); });
+        // ... and for AVX2, where glint_multinomial_exact_all_weighted runs it (the CPU has AVX2).
+        MESSAGE("eight-group pass with AVX2: " << std::string(MF::glint_cpu_avx2() ? "run" : "not run: not used here (a CPU without AVX2, or a build without the AVX2 path)"));
+        if (MF::glint_cpu_avx2())
+            check_lane_group_pass<8>([](auto&&... a) { return MF::glint_multinomial_exact_all_groups_x8(a...); });
+    });
 }
 
 namespace {
@@ -395,17 +399,19 @@ void check_follower_pass(Pass pass, long& calls, long& two_passes, long& differ,
 }  // namespace
 
 TEST_CASE("the lane-group pass leaves out thresholds within 2^16 of the one before only while no trial lies between them") {
-    using MF = glint::detail::glsl::kernels<float>;
-    long calls = 0, two_passes = 0, differ = 0, spoilt = 0;
-    check_follower_pass<4>([](auto&&... a) { return MF::glint_multinomial_exact_all_groups_x4(a...); }, calls, two_passes, differ, spoilt);
-    check_follower_pass<8>([](auto&&... a) { return MF::glint_multinomial_exact_all_groups<8>(a...); }, calls, two_passes, differ, spoilt);
-    if (MF::glint_cpu_avx2())
-        check_follower_pass<8>([](auto&&... a) { return MF::glint_multinomial_exact_all_groups_x8(a...); }, calls, two_passes, differ, spoilt);
-    MESSAGE(calls << " groups weighted alone under thresholds with a trial between two that share 16 digits: " << two_passes
-                  << " ran the second pass, " << differ << " differ from their one-group pass; without the stop after 16 digits "
-                  << spoilt << " would");
-    CHECK(calls >= 4 * 100 * 12);
-    CHECK(two_passes == calls);  // every call has the trial between c_j and c_(j+1)
-    CHECK(differ == 0);
-    CHECK(spoilt >= 4 * 100 / 2);  // the trial's group in bin j + 1 at least (its other digits all ones: 2^-16)
+    glint_test::for_each_lanes_path([&](int) {
+        using MF = glint::detail::glsl::kernels<float>;
+        long calls = 0, two_passes = 0, differ = 0, spoilt = 0;
+        check_follower_pass<4>([](auto&&... a) { return MF::glint_multinomial_exact_all_groups_x4(a...); }, calls, two_passes, differ, spoilt);
+        check_follower_pass<8>([](auto&&... a) { return MF::glint_multinomial_exact_all_groups<8>(a...); }, calls, two_passes, differ, spoilt);
+        if (MF::glint_cpu_avx2())
+            check_follower_pass<8>([](auto&&... a) { return MF::glint_multinomial_exact_all_groups_x8(a...); }, calls, two_passes, differ, spoilt);
+        MESSAGE(calls << " groups weighted alone under thresholds with a trial between two that share 16 digits: " << two_passes
+                      << " ran the second pass, " << differ << " differ from their one-group pass; without the stop after 16 digits "
+                      << spoilt << " would");
+        CHECK(calls >= 4 * 100 * 12);
+        CHECK(two_passes == calls);  // every call has the trial between c_j and c_(j+1)
+        CHECK(differ == 0);
+        CHECK(spoilt >= 4 * 100 / 2);  // the trial's group in bin j + 1 at least (its other digits all ones: 2^-16)
+    });
 }

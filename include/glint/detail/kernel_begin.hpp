@@ -6,6 +6,7 @@
 // namespace glint::detail::glsl, where GLM's functions are visible unqualified. This header
 // defines the macros the kernel text needs; kernel_end.hpp removes every one of them, so nothing
 // leaks into user code. No include guard: the pair is used once, by glint/detail/kernels.hpp.
+#include <atomic>
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
@@ -16,6 +17,10 @@
 
 namespace glint {
 namespace detail {
+// The widest of glint's vector paths that the kernels may take (glint_cpu_lanes, core.glsl):
+// 0 the baseline code, 1 AVX2, 2 AVX2 with AVX-512; the CPU's features still decide. For tests
+// that run every path the CPU has; renderers leave it.
+inline std::atomic<int> lanes_limit{2};
 namespace glsl {
 // GLSL builtins (mix, clamp, exp, log, floor, ...) and types (uvec3, ...) come from GLM.
 using namespace glm;  // NOLINT: confined to glint::detail::glsl
@@ -28,6 +33,25 @@ using namespace glm;  // NOLINT: confined to glint::detail::glsl
 // A kernel function kept out of line in C++ (in GLSL: as GLINT_FN): for a rarely taken, long path
 // whose inlined code would slow its callers' common paths.
 #define GLINT_FN_OUT_OF_LINE __attribute__((noinline)) static
+// Vector code that C++ builds twice where GCC targets x86-64 (not -DGLINT_NO_AVX2): GLINT_LANES_BODY
+// marks the body, name_body, always inlined, and GLINT_LANES_VARIANTS(ret, name, (params), (args))
+// then defines name_avx2 (target AVX2) and name_avx512 (AVX2 with AVX-512 F, VL, DQ and BW on the
+// same 256-bit vectors: ternary logic, mask registers and the like where GCC finds them; no FMA,
+// so the same values bit for bit), both out of line, and name, which calls the one the CPU runs
+// (glint_cpu_avx512, core.glsl). Elsewhere name is one out-of-line copy of the body.
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(GLINT_NO_AVX2)
+#define GLINT_LANES_BODY __attribute__((always_inline, target("avx2"))) static inline
+#define GLINT_LANES_VARIANTS(ret, name, params, args)                                                                      \
+    __attribute__((noinline, target("avx2"))) static ret name##_avx2 params { return name##_body args; }                 \
+    __attribute__((noinline, target("avx2,avx512f,avx512vl,avx512dq,avx512bw"))) static ret name##_avx512 params {      \
+        return name##_body args;                                                                                         \
+    }                                                                                                                    \
+    static ret name params { return glint_cpu_avx512() ? name##_avx512 args : name##_avx2 args; }
+#else
+#define GLINT_LANES_BODY __attribute__((always_inline)) static inline
+#define GLINT_LANES_VARIANTS(ret, name, params, args) \
+    __attribute__((noinline)) static ret name params { return name##_body args; }
+#endif
 // A kernel function always inlined in C++ (in GLSL: as GLINT_FN): the body of a function that C++
 // compiles twice, for the baseline and for AVX2 (target("avx2") code inlines it as AVX2).
 #define GLINT_FN_INLINE __attribute__((always_inline)) static inline

@@ -3,6 +3,8 @@
 #undef GLINT_FN
 #undef GLINT_FN_OUT_OF_LINE
 #undef GLINT_FN_INLINE
+#undef GLINT_LANES_BODY
+#undef GLINT_LANES_VARIANTS
 #undef GLINT_OUT
 #undef GLINT_INOUT
 #undef GLINT_IN

@@ -24,15 +24,27 @@ GLINT_FN uvec3 glint_pcg3d(uvec3 v) {
 }
 
 #if !defined(GLINT_GLSL)
-// C++ only: whether the AVX2 paths are built (GCC on x86-64, not -DGLINT_NO_AVX2) and the CPU
-// has AVX2 (docs/conventions.md).
-static bool glint_cpu_avx2() {
+// C++ only: the vector path the kernels take (docs/conventions.md): 0 the baseline code, 1 AVX2,
+// 2 AVX2 with AVX-512 F, VL, DQ and BW (GLINT_LANES_VARIANTS, kernel_begin.hpp). The paths are
+// built with GCC on x86-64 unless -DGLINT_NO_AVX2; the CPU must have the features (libgcc's
+// check includes the operating system's support of their registers), and
+// glint::detail::lanes_limit can lower the choice.
+static int glint_cpu_lanes() {
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(GLINT_NO_AVX2)
-    return __builtin_cpu_supports("avx2");
+    const int cpu = !__builtin_cpu_supports("avx2") ? 0
+                    : (__builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512vl") && __builtin_cpu_supports("avx512dq") &&
+                       __builtin_cpu_supports("avx512bw"))
+                        ? 2
+                        : 1;
+    const int limit = ::glint::detail::lanes_limit.load(std::memory_order_relaxed);
+    return cpu < limit ? cpu : limit;
 #else
-    return false;
+    return 0;
 #endif
 }
+// Whether the AVX2 paths run (glint_cpu_lanes() >= 1), and their AVX-512 builds (2).
+static bool glint_cpu_avx2() { return glint_cpu_lanes() >= 1; }
+static bool glint_cpu_avx512() { return glint_cpu_lanes() >= 2; }
 
 // C++ only: glint_hash_u32 lane-wise on a vector of words, in place (any vector width of GCC's
 // and Clang's vector extension; in place, as glint_pcg3d_vectors, since a wide vector returned by
@@ -115,14 +127,13 @@ __attribute__((always_inline)) static inline void glint_pcg3d_lanes(const uint x
 // and four at a time there cost more than it saved (-DGLINT_NO_AVX2: glint_frame_loop ibl 4 1's
 // estimates 33.4M to 35.1M instructions; a K = 4 IBL frame 3965 against 4202 us, least of four
 // alternating runs, this 2-core AMD EPYC, CPU).
-#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(GLINT_NO_AVX2)
-__attribute__((noinline, target("avx2"))) static
-#else
-__attribute__((noinline)) static
-#endif
-void glint_pcg3d_many_x8(const uint x[12], const uint y[12], const uint z[12], int count, uint hx[12], uint hy[12], uint hz[12]) {
+GLINT_LANES_BODY
+void glint_pcg3d_many_x8_body(const uint x[12], const uint y[12], const uint z[12], int count, uint hx[12], uint hy[12], uint hz[12]) {
     glint_pcg3d_lanes<8>(x, y, z, count, hx, hy, hz);
 }
+GLINT_LANES_VARIANTS(void, glint_pcg3d_many_x8,
+                     (const uint x[12], const uint y[12], const uint z[12], int count, uint hx[12], uint hy[12], uint hz[12]),
+                     (x, y, z, count, hx, hy, hz))
 
 GLINT_FN void glint_pcg3d_many(const uint x[12], const uint y[12], const uint z[12], int count, uint hx[12], uint hy[12], uint hz[12]) {
     if (glint_cpu_avx2()) {

@@ -214,7 +214,7 @@ struct glint_lattice_triangles {
 // multiply: core.glsl's glint_pcg3d_many). The same words as glint_pcg3d.
 typedef uint glint_u32x4 __attribute__((vector_size(16)));
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(GLINT_NO_AVX2)
-__attribute__((noinline, target("avx2"))) static void glint_lattice_vertex_hashes_x8(glint_u32x4 x0, glint_u32x4 x1, glint_u32x4 x2, glint_u32x4 y0,
+GLINT_LANES_BODY void glint_lattice_vertex_hashes_x8_body(glint_u32x4 x0, glint_u32x4 x1, glint_u32x4 x2, glint_u32x4 y0,
                                                                                     glint_u32x4 y1, glint_u32x4 y2, glint_u32x4 key,
                                                                                     uint out[3][12]) {
     typedef uint u32x8 __attribute__((vector_size(32)));
@@ -228,6 +228,10 @@ __attribute__((noinline, target("avx2"))) static void glint_lattice_vertex_hashe
     std::memcpy(out[1], &y, sizeof(y)), std::memcpy(out[1] + 8, &y4, sizeof(y4));
     std::memcpy(out[2], &z, sizeof(z)), std::memcpy(out[2] + 8, &z4, sizeof(z4));
 }
+GLINT_LANES_VARIANTS(void, glint_lattice_vertex_hashes_x8,
+                     (glint_u32x4 x0, glint_u32x4 x1, glint_u32x4 x2, glint_u32x4 y0, glint_u32x4 y1, glint_u32x4 y2, glint_u32x4 key,
+                      uint out[3][12]),
+                     (x0, x1, x2, y0, y1, y2, key, out))
 #endif
 GLINT_FN_INLINE void glint_lattice_vertex_hashes(glint_u32x4 x0, glint_u32x4 x1, glint_u32x4 x2, glint_u32x4 y0, glint_u32x4 y1, glint_u32x4 y2,
                                                  glint_u32x4 key, uint out[3][12]) {
@@ -641,7 +645,7 @@ glint_draw_masks glint_skip_test_masks(GLINT_INOUT(glint_grid_pixel) px, uint co
 }
 #else
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(GLINT_NO_AVX2)
-__attribute__((noinline, target("avx2"))) static glint_draw_masks glint_skip_test_masks_x8(const glint_grid_pixel& px, const uint corner_key[4],
+GLINT_LANES_BODY glint_draw_masks glint_skip_test_masks_x8_body(const glint_grid_pixel& px, const uint corner_key[4],
                                                                                             const real corner_p[4], int live, bool skip_test) {
     typedef uint u32x8 __attribute__((vector_size(32)));
     typedef int i32x8 __attribute__((vector_size(32)));
@@ -686,6 +690,9 @@ __attribute__((noinline, target("avx2"))) static glint_draw_masks glint_skip_tes
     masks.any = any;
     return masks;
 }
+GLINT_LANES_VARIANTS(glint_draw_masks, glint_skip_test_masks_x8,
+                     (const glint_grid_pixel& px, const uint corner_key[4], const real corner_p[4], int live, bool skip_test),
+                     (px, corner_key, corner_p, live, skip_test))
 #endif
 GLINT_FN_OUT_OF_LINE glint_draw_masks glint_skip_test_masks(glint_grid_pixel& px, uint corner_key[4], real corner_p[4], int live, bool skip_test) {
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(GLINT_NO_AVX2)
@@ -972,7 +979,7 @@ __attribute__((always_inline, target("avx2"))) static inline void glint_light_la
     }
 }
 
-__attribute__((noinline, target("avx2"))) static void glint_grid_sample_lights_x8(glint_grid_pixel& px, const glint_grid_params& g,
+GLINT_LANES_BODY void glint_grid_sample_lights_x8_body(glint_grid_pixel& px, const glint_grid_params& g,
                                                                                   const glint_grid_light* lights, int count, glint_grid_estimate* out) {
     typedef glint_f32x8 f32x8;
     typedef glint_i32x8 i32x8;
@@ -1012,6 +1019,9 @@ __attribute__((noinline, target("avx2"))) static void glint_grid_sample_lights_x
         }
     }
 }
+GLINT_LANES_VARIANTS(void, glint_grid_sample_lights_x8,
+                     (glint_grid_pixel& px, const glint_grid_params& g, const glint_grid_light* lights, int count, glint_grid_estimate* out),
+                     (px, g, lights, count, out))
 #endif
 
 GLINT_FN_OUT_OF_LINE void glint_grid_sample_pixel_lights(glint_grid_pixel& px, const glint_grid_params& g, const glint_grid_light* lights, int count,
@@ -1174,12 +1184,8 @@ __attribute__((always_inline)) static inline void glint_lanes_lattice(const glin
 // glint_lattice_triangles_x4's operations with the pixels in the lanes instead of the lattice
 // points, every lattice point in slots 4 t + l, or for a pixel with a lattice_u its chosen point's
 // three vertices in slots 0 to 2 (the same values bit for bit); no pixel's vertex arrays written.
-#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(GLINT_NO_AVX2)
-__attribute__((noinline, target("avx2"))) static
-#else
-__attribute__((noinline)) static
-#endif
-void glint_lanes_footprint_vertices(glint_lanes_vertices& d, int n, const glint_grid_pixel* px, real lod_scale, int drawing, uint seed) {
+GLINT_LANES_BODY
+void glint_lanes_footprint_vertices_body(glint_lanes_vertices& d, int n, const glint_grid_pixel* px, real lod_scale, int drawing, uint seed) {
     typedef glint_u32x8 u32x8;
     typedef glint_i32x8 i32x8;
     typedef glint_u64x4 u64x4;
@@ -1274,6 +1280,9 @@ void glint_lanes_footprint_vertices(glint_lanes_vertices& d, int n, const glint_
         std::memcpy(d.hash_x[slot], &hx, sizeof(hx)), std::memcpy(d.hash_y[slot], &hy, sizeof(hy)), std::memcpy(d.hash_z[slot], &hz, sizeof(hz));
     }
 }
+GLINT_LANES_VARIANTS(void, glint_lanes_footprint_vertices,
+                     (glint_lanes_vertices& d, int n, const glint_grid_pixel* px, real lod_scale, int drawing, uint seed),
+                     (d, n, px, lod_scale, drawing, seed))
 
 
 // glint_grid_pixel_setup_stochastic for pixels 0 .. n - 1 (n <= 8; u < 0: every lattice point),
@@ -1282,7 +1291,7 @@ void glint_lanes_footprint_vertices(glint_lanes_vertices& d, int n, const glint_
 // both sides of glint_atan2's selects computed), the same values bit for bit. One pixel at a time
 // the footprint is a chain of two square roots and two divisions.
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(GLINT_NO_AVX2)
-__attribute__((noinline, target("avx2"))) static void glint_grid_pixels_setup_x8(int n, const vec2* uv, const vec2* duvdx, const vec2* duvdy,
+GLINT_LANES_BODY void glint_grid_pixels_setup_x8_body(int n, const vec2* uv, const vec2* duvdx, const vec2* duvdy,
                                                                                  const glint_grid_params& g, const real* lattice_u, glint_grid_pixel* out) {
     typedef glint_f32x8 f32x8;
     typedef glint_i32x8 i32x8;
@@ -1342,6 +1351,10 @@ __attribute__((noinline, target("avx2"))) static void glint_grid_pixels_setup_x8
         px.v.count = 0;
     }
 }
+GLINT_LANES_VARIANTS(void, glint_grid_pixels_setup_x8,
+                     (int n, const vec2* uv, const vec2* duvdx, const vec2* duvdy, const glint_grid_params& g, const real* lattice_u,
+                      glint_grid_pixel* out),
+                     (n, uv, duvdx, duvdy, g, lattice_u, out))
 #endif
 
 // out[i] = glint_grid_pixel_setup_stochastic(uv[i], duvdx[i], duvdy[i], g, u) for i < count, u =
@@ -1372,7 +1385,7 @@ GLINT_FN_OUT_OF_LINE void glint_grid_pixels_setup(int count, const vec2* uv, con
 // pixel's draws in glint_grid_sample_pixel's order. The pixels' own vertex arrays are not filled
 // (the single-pixel fallbacks fill them, as glint_grid_sample_pixel does).
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(GLINT_NO_AVX2)
-__attribute__((noinline, target("avx2"))) static void glint_grid_sample_pixels_x8(glint_grid_pixel* px, int n, const glint_grid_params& g,
+GLINT_LANES_BODY void glint_grid_sample_pixels_x8_body(glint_grid_pixel* px, int n, const glint_grid_params& g,
                                                                                   const glint_grid_light* lights, glint_grid_estimate* out) {
     typedef glint_f32x8 f32x8;
     typedef glint_i32x8 i32x8;
@@ -1418,6 +1431,9 @@ __attribute__((noinline, target("avx2"))) static void glint_grid_sample_pixels_x
         }
     }
 }
+GLINT_LANES_VARIANTS(void, glint_grid_sample_pixels_x8,
+                     (glint_grid_pixel* px, int n, const glint_grid_params& g, const glint_grid_light* lights, glint_grid_estimate* out),
+                     (px, n, g, lights, out))
 #endif
 
 // out[i] = glint_grid_sample_pixel(px[i], g, lights[i]) for i < count, bit for bit: pixel i under

@@ -414,12 +414,8 @@ __attribute__((always_inline)) static inline void glint_ibl_lanes_draw_of(GLINT_
     }
 }
 
-#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(GLINT_NO_AVX2)
-__attribute__((noinline, target("avx2"))) static
-#else
-__attribute__((noinline)) static
-#endif
-void glint_ibl_lanes_draw(GLINT_INOUT(glint_ibl_lanes) d, int T, bool unbiased) {
+GLINT_LANES_BODY
+void glint_ibl_lanes_draw_body(GLINT_INOUT(glint_ibl_lanes) d, int T, bool unbiased) {
     switch (T) {
         case 2: glint_ibl_lanes_draw_of<2>(d, unbiased); break;
         case 3: glint_ibl_lanes_draw_of<3>(d, unbiased); break;
@@ -429,18 +425,17 @@ void glint_ibl_lanes_draw(GLINT_INOUT(glint_ibl_lanes) d, int T, bool unbiased) 
         default: glint_ibl_lanes_draw_of<7>(d, unbiased); break;
     }
 }
+GLINT_LANES_VARIANTS(void, glint_ibl_lanes_draw,
+                     (GLINT_INOUT(glint_ibl_lanes) d, int T, bool unbiased),
+                     (d, T, unbiased))
 
 // The first part of glint_ibl_sample_pixel for lanes 0 .. n - 1 (the others repeat lane n - 1 and
 // do not draw): glint_ibl_needs_draws into out[v], and where it draws, glint_ibl_lit_levels,
 // glint_multinomial_tree_root, _exact_all_thresholds and the followers of
 // glint_multinomial_exact_all_groups into d, lane-wise with the same operations in the same order
 // (the same values bit for bit). Returns the lanes that draw (bit v).
-#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(GLINT_NO_AVX2)
-__attribute__((noinline, target("avx2"))) static
-#else
-__attribute__((noinline)) static
-#endif
-int glint_ibl_lanes_setup(GLINT_INOUT(glint_ibl_lanes) d, int n, const glint_grid_pixel* px, GLINT_IN(glint_grid_params) g, GLINT_IN(glint_ibl_levels) lv,
+GLINT_LANES_BODY
+int glint_ibl_lanes_setup_body(GLINT_INOUT(glint_ibl_lanes) d, int n, const glint_grid_pixel* px, GLINT_IN(glint_grid_params) g, GLINT_IN(glint_ibl_levels) lv,
                           const glint_ibl_indicators* ind, const real* e_d, real d_h, glint_grid_estimate* out) {
     typedef glint_u32x8 u32x8;
     typedef glint_i32x8 i32x8;
@@ -526,6 +521,10 @@ int glint_ibl_lanes_setup(GLINT_INOUT(glint_ibl_lanes) d, int n, const glint_gri
     std::memcpy(d.N, &N, sizeof(N));
     return drawing;
 }
+GLINT_LANES_VARIANTS(int, glint_ibl_lanes_setup,
+                     (GLINT_INOUT(glint_ibl_lanes) d, int n, const glint_grid_pixel* px, GLINT_IN(glint_grid_params) g,
+                      GLINT_IN(glint_ibl_levels) lv, const glint_ibl_indicators* ind, const real* e_d, real d_h, glint_grid_estimate* out),
+                     (d, n, px, g, lv, ind, e_d, d_h, out))
 
 // out[i] = glint_ibl_sample_pixel(px[i], g, lv, ind[i], e_d[i], d_h) for i < count, to float
 // rounding of the value (the draws and the expectation exactly): eight pixels at a time where the

@@ -617,16 +617,16 @@ GLINT_FN_OUT_OF_LINE int glint_multinomial_exact_all_groups_x4(const glint_multi
 // passes (each digit waits for the slowest of eight groups): the baseline keeps four.
 // Without the AVX2 path (another compiler or target, or GLINT_NO_AVX2) it is the baseline's, which
 // glint_multinomial_exact_all_weighted does not call: it draws four groups at a time there.
-#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(GLINT_NO_AVX2)
-__attribute__((noinline, target("avx2"))) static
-#else
-__attribute__((noinline)) static
-#endif
-int glint_multinomial_exact_all_groups_x8(const glint_multinomial_thresholds& c, int K, const uint lanes_in[8], const uint frac_in[8],
+GLINT_LANES_BODY
+int glint_multinomial_exact_all_groups_x8_body(const glint_multinomial_thresholds& c, int K, const uint lanes_in[8], const uint frac_in[8],
                                           const uint state_in[8], const uint step_in[8], const real weight_in[8], const real frac_weight_in[8],
                                           real weighted[8]) {
     return glint_multinomial_exact_all_groups<8>(c, K, lanes_in, frac_in, state_in, step_in, weight_in, frac_weight_in, weighted);
 }
+GLINT_LANES_VARIANTS(int, glint_multinomial_exact_all_groups_x8,
+                     (const glint_multinomial_thresholds& c, int K, const uint lanes_in[8], const uint frac_in[8], const uint state_in[8],
+                      const uint step_in[8], const real weight_in[8], const real frac_weight_in[8], real weighted[8]),
+                     (c, K, lanes_in, frac_in, state_in, step_in, weight_in, frac_weight_in, weighted))
 
 
 // glint_multinomial_exact_all for the draws i with bit i of draws set (each with N[i] from 4 to

@@ -346,7 +346,6 @@ template <int T>
 __attribute__((always_inline)) static inline void glint_ibl_lanes_draw_of(GLINT_INOUT(glint_ibl_lanes) d, bool unbiased) {
     typedef glint_u32x8 u32x8;
     typedef glint_i32x8 i32x8;
-    typedef glint_u64x4 u64x4;
     typedef glint_realx8 realx8;
     typedef decltype(realx8{} < realx8{}) maskx8;
     realx8 N, total;
@@ -356,15 +355,13 @@ __attribute__((always_inline)) static inline void glint_ibl_lanes_draw_of(GLINT_
     // glint_multinomial_exact_all_applies), and each lane's counts of both.
     const i32x8 all_ones = i32x8{} - 1;
     const i32x8 variant = unbiased ? all_ones : i32x8{};
-    realx8 share[12], weight[12];
-    u32x8 hash_x[12], hash_y[12], hash_z[12];
-    std::memcpy(share, d.v.share, sizeof(share)), std::memcpy(weight, d.v.weight, sizeof(weight));
-    std::memcpy(hash_x, d.v.hash_x, sizeof(hash_x)), std::memcpy(hash_y, d.v.hash_y, sizeof(hash_y)), std::memcpy(hash_z, d.v.hash_z, sizeof(hash_z));
     i32x8 batch[12], present_count = {}, batch_count = {};
     realx8 n[12];
     for (int s = 0; s < 12; ++s) {
-        n[s] = N * share[s];
-        const i32x8 present = (count > s) & __builtin_convertvector(weight[s] > real(0), i32x8);
+        realx8 share, weight;  // the vertices read in place, slot by slot
+        std::memcpy(&share, d.v.share[s], sizeof(share)), std::memcpy(&weight, d.v.weight[s], sizeof(weight));
+        n[s] = N * share;
+        const i32x8 present = (count > s) & __builtin_convertvector(weight > real(0), i32x8);
         batch[s] = present & variant &
                    __builtin_convertvector((n[s] >= GLINT_MULTINOMIAL_EXACT_SPLIT_MIN) & (n[s] <= GLINT_MULTINOMIAL_EXACT_ALL_MAX) & (n[s] * total >= real(1)),
                                            i32x8);
@@ -379,10 +376,10 @@ __attribute__((always_inline)) static inline void glint_ibl_lanes_draw_of(GLINT_
     std::memcpy(&has_follower, d.has_follower, sizeof(has_follower));
     for (int s = 0; s < 12; ++s) {
         const i32x8 in_pass = batch[s];
-        const u64x4 any = reinterpret_cast<u64x4>(in_pass);
-        if ((any[0] | any[1] | any[2] | any[3]) == 0u) continue;
+        if (glint_lanes_all_zero(reinterpret_cast<u32x8>(in_pass))) continue;
         // The root words, PCG3D of the vertex's (glint_multinomial_node_words(hash, 0)).
-        u32x8 x = hash_x[s], y = hash_y[s], z = hash_z[s];
+        u32x8 x, y, z;
+        std::memcpy(&x, d.v.hash_x[s], sizeof(x)), std::memcpy(&y, d.v.hash_y[s], sizeof(y)), std::memcpy(&z, d.v.hash_z[s], sizeof(z));
         glint_pcg3d_vectors(x, y, z);
         // glint_multinomial_exact_all_lanes and _frac_lanes lane-wise.
         const realx8 capped = (GLINT_MULTINOMIAL_EXACT_ALL_MAX < n[s]) ? realx8{} + GLINT_MULTINOMIAL_EXACT_ALL_MAX : n[s];
@@ -395,7 +392,9 @@ __attribute__((always_inline)) static inline void glint_ibl_lanes_draw_of(GLINT_
         const u32x8 frac_a = (lanes_b == 0u) ? lanes_a ^ (lanes_a >> 1u) : u32x8{};
         const u32x8 frac_b = lanes_b ^ (lanes_b >> 1u);
         const maskx8 in = reinterpret_cast<maskx8>(in_pass);  // lanes outside the pass add nothing (no NaN from their N)
-        const realx8 weight_in = in ? weight[s] : realx8{};
+        realx8 weight;
+        std::memcpy(&weight, d.v.weight[s], sizeof(weight));
+        const realx8 weight_in = in ? weight : realx8{};
         const realx8 frac_share = in ? weight_in * (n[s] - __builtin_convertvector(whole, realx8)) : realx8{};
         const realx8 frac_weight_a = (reinterpret_cast<maskx8>(two)) ? realx8{} : frac_share;
         const u32x8 step = y | 1u;
@@ -403,11 +402,9 @@ __attribute__((always_inline)) static inline void glint_ibl_lanes_draw_of(GLINT_
         real w[8], fwa[8], fwb[8];
         std::memcpy(la, &lanes_a, sizeof(la)), std::memcpy(fa, &frac_a, sizeof(fa)), std::memcpy(sa, &x, sizeof(sa)), std::memcpy(st, &step, sizeof(st));
         std::memcpy(w, &weight_in, sizeof(w)), std::memcpy(fwa, &frac_weight_a, sizeof(fwa));
-        const bool followers = ((reinterpret_cast<u64x4>(has_follower & pass)[0] | reinterpret_cast<u64x4>(has_follower & pass)[1] |
-                                 reinterpret_cast<u64x4>(has_follower & pass)[2] | reinterpret_cast<u64x4>(has_follower & pass)[3]) != 0u);
+        const bool followers = !glint_lanes_all_zero(has_follower & pass);
         glint_ibl_lanes_pass<T>(d, followers, la, fa, sa, st, w, fwa);
-        const u64x4 any_b = reinterpret_cast<u64x4>(lanes_b);
-        if ((any_b[0] | any_b[1] | any_b[2] | any_b[3]) == 0u) continue;
+        if (glint_lanes_all_zero(lanes_b)) continue;
         std::memcpy(lb, &lanes_b, sizeof(lb)), std::memcpy(fb, &frac_b, sizeof(fb)), std::memcpy(sb, &z, sizeof(sb));
         std::memcpy(fwb, &frac_share, sizeof(fwb));
         glint_ibl_lanes_pass<T>(d, followers, lb, fb, sb, st, w, fwb);

@@ -361,8 +361,8 @@ TEST_CASE("ibl: the lanes' lattice (glint_lanes_lattice) is glint_footprint_latt
     // both LOD clamps), aspect ratios 1 to 2^5 (past the clamp at 16), angles over [0, pi), and
     // the edges: minor axes at powers of two (tl = 0), ratios at powers of two (tr = 0), angles at
     // bin boundaries, minor 0, and major 0. Every lane's weights (as bits), lods, levels and bins and
-    // its rotations must equal the scalar function's and glint_lattice_rotation's, and the lanes
-    // outside `drawing` must have weight 0. Coverage: the ratio levels r0 and the prism's three
+    // its rotations (glint_lanes_rotation of those levels and bins) must equal the scalar
+    // function's and glint_lattice_rotation's, and the lanes outside `drawing` must have weight 0. Coverage: the ratio levels r0 and the prism's three
     // splits are counted, each must occur.
     long mismatches = 0, splits[3] = {0, 0, 0}, levels[4] = {0, 0, 0, 0};
     const float lod_scale = 1.5f;
@@ -397,7 +397,9 @@ TEST_CASE("ibl: the lanes' lattice (glint_lanes_lattice) is glint_footprint_latt
                 same = same && std::memcmp(&w, &lat.weight[k][v], sizeof(w)) == 0 && l.lod[k] == lat.lod[k][v] && l.level[k] == lat.level[k][v] &&
                        l.bin[k] == lat.bin[k][v];
                 const glm::vec2 r = K::glint_lattice_rotation(l.level[k], l.bin[k]);
-                same = same && r.x == lat.cos[k][v] && r.y == lat.sin[k][v];
+                K::glint_f32x8 c, s;
+                K::glint_lanes_rotation(lat.level[k], lat.bin[k], c, s);
+                same = same && r.x == c[v] && r.y == s[v];
             }
             mismatches += !same;
             // The split: the fourth point repeats v1 (L0 + 1 at index 0 false), v2 or v3.

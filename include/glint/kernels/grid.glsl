@@ -1059,11 +1059,21 @@ struct glint_lanes_vertices {
 };
 
 // The lanes' pixels' lattice points ([l] a vector of the eight lanes; weight 0 in a lane that does
-// not draw) and each point's rotation (glint_lattice_rotation).
+// not draw); their rotations from glint_lanes_rotation.
 struct glint_lattice_lanes {
-    glint_f32x8 weight[4], cos[4], sin[4];
+    glint_f32x8 weight[4];
     glint_i32x8 lod[4], level[4], bin[4];
 };
+
+// glint_lattice_rotation(level, bin) lane by lane from the table: (cos, sin), the same values.
+// Apart from glint_lanes_lattice, so that the vertices look up the rotations of the lattice points
+// that some lane weighs only (half of them at an isotropic footprint).
+__attribute__((always_inline)) static inline void glint_lanes_rotation(const glint_i32x8& level, const glint_i32x8& bin, glint_f32x8& c, glint_f32x8& s) {
+    static const vec2* const rotation = glint_lattice_rotation_table();
+    const glint_i32x8 r = (bin << (GLINT_MAX_RATIO_LEVEL - level)) & 31;
+    c = glint_f32x8{rotation[r[0]].x, rotation[r[1]].x, rotation[r[2]].x, rotation[r[3]].x, rotation[r[4]].x, rotation[r[5]].x, rotation[r[6]].x, rotation[r[7]].x};
+    s = glint_f32x8{rotation[r[0]].y, rotation[r[1]].y, rotation[r[2]].y, rotation[r[3]].y, rotation[r[4]].y, rotation[r[5]].y, rotation[r[6]].y, rotation[r[7]].y};
+}
 
 // glint_log2 lane-wise, in place (a reference: a vector passed by value to a function not compiled
 // for AVX would change the ABI).
@@ -1164,18 +1174,11 @@ __attribute__((always_inline)) static inline void glint_lanes_lattice(const glin
     const i32x8 last_level = first ? level[0] : (second ? level[1] : level[2]), last_bin = first ? bin[0] : (second ? bin[1] : bin[2]);
     i32x8 draws = {};
     for (int v = 0; v < 8; ++v) draws[v] = ((drawing >> v) & 1) != 0 ? -1 : 0;
-    static const vec2* const rotation = glint_lattice_rotation_table();
     for (int l = 0; l < 4; ++l) {
         lat.weight[l] = draws ? ((w[l] < real(0)) ? zero : w[l]) : zero;
         lat.lod[l] = lods[l];
         lat.level[l] = (l < 3) ? level[l] : last_level;
         lat.bin[l] = (l < 3) ? bin[l] : last_bin;
-        // glint_lattice_rotation from the table, lane by lane into registers.
-        const i32x8 r = (lat.bin[l] << (GLINT_MAX_RATIO_LEVEL - lat.level[l])) & 31;
-        lat.cos[l] = f32x8{rotation[r[0]].x, rotation[r[1]].x, rotation[r[2]].x, rotation[r[3]].x,
-                           rotation[r[4]].x, rotation[r[5]].x, rotation[r[6]].x, rotation[r[7]].x};
-        lat.sin[l] = f32x8{rotation[r[0]].y, rotation[r[1]].y, rotation[r[2]].y, rotation[r[3]].y,
-                           rotation[r[4]].y, rotation[r[5]].y, rotation[r[6]].y, rotation[r[7]].y};
     }
 }
 
@@ -1214,11 +1217,13 @@ void glint_lanes_footprint_vertices_body(glint_lanes_vertices& d, int n, const g
         chosen = (on & ((chosen < 0) | (lattice_u >= below))) ? i32x8{} + l : chosen;
         below = on ? below + lat.weight[l] : below;
     }
-    f32x8 one_weight[3] = {}, one_share[3] = {};
-    u32x8 one_hash_x[3] = {}, one_hash_y[3] = {}, one_hash_z[3] = {};
+    f32x8 one_weight[3], one_share[3];  // set where some_one
+    u32x8 one_hash_x[3], one_hash_y[3], one_hash_z[3];
+    if (some_one)
+        for (int t = 0; t < 3; ++t) one_weight[t] = one_share[t] = f32x8{}, one_hash_x[t] = one_hash_y[t] = one_hash_z[t] = u32x8{};
     for (int v = 0; v < 8; ++v) d.count[v] = ((drawing >> v) & 1) == 0 ? 0 : (one_point[v] != 0 ? 3 : 12);
     for (int l = 0; l < 4; ++l) {
-        const f32x8 c = lat.cos[l], sn = lat.sin[l], wl = lat.weight[l];
+        const f32x8 wl = lat.weight[l];
         // A lattice point that no lane's footprint weighs (an isotropic footprint's second ratio
         // level) has no vertices to draw: zero weights, shares and words, no triangle or hashes.
         // In the IBL's K = 4 frame (glint_frame_loop ibl-rows 4) half the lattice points: 9.10M to
@@ -1234,6 +1239,8 @@ void glint_lanes_footprint_vertices_body(glint_lanes_vertices& d, int n, const g
             continue;
         }
         const i32x8 lod = lat.lod[l], level = lat.level[l], bin = lat.bin[l];
+        f32x8 c, sn;
+        glint_lanes_rotation(level, bin, c, sn);
         const f32x8 scale_x = reinterpret_cast<f32x8>((-lod - level + 127) << 23), scale_y = reinterpret_cast<f32x8>((-lod + 127) << 23);
         const f32x8 qx = (c * ux + sn * uy) * scale_x, qy = (-sn * ux + c * uy) * scale_y;
         f32x8 sx = qx - qy * real(0.577350269189625764509), sy = qy * real(1.15470053837925152902);

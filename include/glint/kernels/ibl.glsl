@@ -450,20 +450,22 @@ int glint_ibl_lanes_setup_body(GLINT_INOUT(glint_ibl_lanes) d, int n, const glin
     const int K = clamp(lv.count, 3, GLINT_IBL_MAX_LEVELS);
     // glint_ibl_probabilities
     const real area = max(d_h, real(1));
+    // (The levels from K on add zeros, which change no sum: they are left out.)
     realx8 p[8], total = zero;
-    for (int k = 0; k < 8; ++k) {
+    for (int k = 0; k < 8; ++k) p[k] = zero;
+    for (int k = 0; k < K; ++k) {
         realx8 x = e * w[k] / area;
         x = (x < zero) ? zero : x;
         x = (one < x) ? one : x;
-        p[k] = (k < K) ? x : zero;
+        p[k] = x;
         total += p[k];
     }
     const realx8 scale = (total > one) ? one / total : one;
-    for (int k = 0; k < 8; ++k) p[k] *= scale;
+    for (int k = 0; k < K; ++k) p[k] *= scale;
     // glint_ibl_needs_draws
     realx8 expected = zero, second = zero;
-    for (int k = 1; k < 8; ++k) {
-        const real L = (k < K) ? lv.radiance[k] : real(0);
+    for (int k = 1; k < K; ++k) {
+        const real L = lv.radiance[k];
         expected += L * p[k];
         second += L * L * p[k];
     }
@@ -495,7 +497,12 @@ int glint_ibl_lanes_setup_body(GLINT_INOUT(glint_ibl_lanes) d, int n, const glin
     u32x8 sum = {}, reached = {}, has_follower = {}, c_before = {}, full_before = {}, lead_c = {}, lead_full = {};
     const realx8 two32 = zero + real(4294967296.0), two31 = zero + real(2147483648.0);
     for (int k = 0; k < 8; ++k) {
-        const realx8 scaled = (k < T) ? t[k] * t_scale * real(4294967296.0) : zero;  // p_k 2^32, exact in float
+        if (k >= T) {  // scaled 0 from here on: the sums stay, no follower
+            std::memcpy(d.c[k], &sum, sizeof(sum)), std::memcpy(d.full[k], &reached, sizeof(reached));
+            std::memcpy(d.lead_c[k], &sum, sizeof(sum)), std::memcpy(d.lead_full[k], &reached, sizeof(reached));
+            continue;
+        }
+        const realx8 scaled = t[k] * t_scale * real(4294967296.0);  // p_k 2^32, exact in float
         const u32x8 whole_word = reinterpret_cast<u32x8>(__builtin_convertvector(scaled >= two32, i32x8));
         const u32x8 no_add = whole_word | reinterpret_cast<u32x8>(__builtin_convertvector(!(scaled >= zero), i32x8));
         // uint(scaled) for scaled in [0, 2^32): from 2^31 on, as an int after subtracting 2^31 (exact)
@@ -505,8 +512,7 @@ int glint_ibl_lanes_setup_body(GLINT_INOUT(glint_ibl_lanes) d, int n, const glin
         const u32x8 next = sum + (no_add ? u32x8{} : as_uint);
         reached |= whole_word | (next < sum);
         sum = next;
-        const u32x8 follower = (k > 0 && k < T) ? ((((c_before ^ sum) >> uint(32 - GLINT_MULTINOMIAL_FOLLOWER_DIGITS)) == 0u) & ~(reached | full_before))
-                                                : u32x8{};
+        const u32x8 follower = (k > 0) ? ((((c_before ^ sum) >> uint(32 - GLINT_MULTINOMIAL_FOLLOWER_DIGITS)) == 0u) & ~(reached | full_before)) : u32x8{};
         lead_c = follower ? lead_c : sum;
         lead_full = follower ? lead_full : reached;
         has_follower |= follower;
@@ -548,23 +554,30 @@ GLINT_FN void glint_ibl_sample_pixels(int count, glint_grid_pixel* px, GLINT_IN(
         glint_lanes_footprint_vertices(d.v, n, px + first, g.lod_scale, drawing, g.seed);
         if (drawing == 0) continue;
         glint_ibl_lanes_draw(d, K - 1, g.variant == GLINT_BINOMIAL_UNBIASED);
+        // glint_ibl_value of the shares weighted[k] / N, lane-wise (the same operations in the
+        // same order: the same values).
+        glint_realx8 N, value = {};
+        std::memcpy(&N, d.N, sizeof(N));
+        for (int k = 1; k < 8; ++k) {
+            glint_realx8 weighted;
+            std::memcpy(&weighted, d.weighted[k - 1], sizeof(weighted));
+            value += (k < K) ? lv.radiance[k] * (weighted / N) : glint_realx8{};
+        }
         for (int v = 0; v < n; ++v) {
             if (((drawing >> v) & 1) == 0) continue;
             glint_grid_estimate& o = out[first + v];
-            glint_ibl_shares sh;
             if (((d.rest >> v) & 1) != 0) {  // the loop draws the other vertices, after the pass's
                 glint_grid_pixel_vertices(px[first + v], g);  // where the lanes computed them, the same vertices
                 glint_ibl_predrawn pre;
                 glint_multinomial_probabilities lit;
                 for (int k = 0; k < 8; ++k) pre.weighted[k] = d.weighted[k][v], lit.p[k] = d.lit[k][v];
-                sh = glint_ibl_level_shares(px[first + v], g, K, lit, &pre);
+                glint_ibl_shares sh = glint_ibl_level_shares(px[first + v], g, K, lit, &pre);
+                o.value = glint_ibl_value(lv, sh);
+                o.draws = sh.draws;
             } else {
-                sh.share[0] = real(0);
-                for (int k = 0; k < 7; ++k) sh.share[k + 1] = d.weighted[k][v] / d.N[v];
-                sh.draws = d.batched[v] * (K - 1);
+                o.value = value[v];
+                o.draws = d.batched[v] * (K - 1);
             }
-            o.value = glint_ibl_value(lv, sh);
-            o.draws = sh.draws;
         }
     }
     }

@@ -1053,6 +1053,7 @@ GLINT_FN_OUT_OF_LINE void glint_grid_sample_pixel_lights(glint_grid_pixel& px, c
 // The lanes' vertices, slot by lane: [s][v] is slot s of pixel v, as glint_grid_vertices holds it.
 struct glint_lanes_vertices {
     int count[8];  // 12 where the lane's pixel draws on its four lattice points, 3 on one, else 0
+    int slots;     // bit s set where some lane may hold a vertex in slot s; the other slots are not written
     real share[12][8];
     real weight[12][8];
     uint hash_x[12][8], hash_y[12][8], hash_z[12][8];
@@ -1222,22 +1223,26 @@ void glint_lanes_footprint_vertices_body(glint_lanes_vertices& d, int n, const g
     if (some_one)
         for (int t = 0; t < 3; ++t) one_weight[t] = one_share[t] = f32x8{}, one_hash_x[t] = one_hash_y[t] = one_hash_z[t] = u32x8{};
     for (int v = 0; v < 8; ++v) d.count[v] = ((drawing >> v) & 1) == 0 ? 0 : (one_point[v] != 0 ? 3 : 12);
+    d.slots = some_one ? 0xfff : 0;
     for (int l = 0; l < 4; ++l) {
         const f32x8 wl = lat.weight[l];
         // A lattice point that no lane's footprint weighs (an isotropic footprint's second ratio
-        // level) has no vertices to draw: zero weights, shares and words, no triangle or hashes.
-        // In the IBL's K = 4 frame (glint_frame_loop ibl-rows 4) half the lattice points: 9.10M to
-        // 8.58M instructions in the estimates, the least frame 1555-1568 to 1487-1499 us.
+        // level) has no vertices to draw: no triangle or hashes, and its slots are left out of
+        // d.slots unwritten (zeros where the one-point pixels' merge below reads every slot). In
+        // the IBL's K = 4 frame (glint_frame_loop ibl-rows 4) half the lattice points: 9.10M to
+        // 8.58M instructions in the estimates, the least frame 1555-1568 to 1487-1499 us; the
+        // zeros' stores left out, 7.45M to 7.40M (DEVELOPERS.md).
         const u64x4 weighed = reinterpret_cast<u64x4>(wl > real(0));
         if ((weighed[0] | weighed[1] | weighed[2] | weighed[3]) == 0u) {
             const u32x8 none = {};
-            for (int t = 0; t < 3; ++t) {
+            for (int t = 0; t < 3 && some_one; ++t) {
                 const int slot = 4 * t + l;
                 std::memcpy(d.weight[slot], &none, sizeof(none)), std::memcpy(d.share[slot], &none, sizeof(none));
                 std::memcpy(d.hash_x[slot], &none, sizeof(none)), std::memcpy(d.hash_y[slot], &none, sizeof(none)), std::memcpy(d.hash_z[slot], &none, sizeof(none));
             }
             continue;
         }
+        d.slots |= 0x111 << l;
         const i32x8 lod = lat.lod[l], level = lat.level[l], bin = lat.bin[l];
         f32x8 c, sn;
         glint_lanes_rotation(level, bin, c, sn);
@@ -1414,6 +1419,10 @@ GLINT_LANES_BODY void glint_grid_sample_pixels_x8_body(glint_grid_pixel* px, int
     // pixel's corner keys (a slot without a vertex never draws).
     i32x8 bits[12], any = {};
     for (int s = 0; s < 12; ++s) {
+        if (((d.slots >> s) & 1) == 0) {
+            bits[s] = i32x8{};
+            continue;
+        }
         f32x8 share, weight;
         u32x8 hx;
         std::memcpy(&share, d.share[s], sizeof(share)), std::memcpy(&weight, d.weight[s], sizeof(weight)), std::memcpy(&hx, d.hash_x[s], sizeof(hx));

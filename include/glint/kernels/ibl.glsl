@@ -358,10 +358,14 @@ __attribute__((always_inline)) static inline void glint_ibl_lanes_draw_of(GLINT_
     i32x8 batch[12], present_count = {}, batch_count = {};
     realx8 n[12];
     for (int s = 0; s < 12; ++s) {
+        if (((d.v.slots >> s) & 1) == 0) {  // a slot no lane's vertex holds
+            batch[s] = i32x8{};
+            continue;
+        }
         realx8 share, weight;  // the vertices read in place, slot by slot
         std::memcpy(&share, d.v.share[s], sizeof(share)), std::memcpy(&weight, d.v.weight[s], sizeof(weight));
-        n[s] = N * share;
         const i32x8 present = (count > s) & __builtin_convertvector(weight > real(0), i32x8);
+        n[s] = N * share;
         batch[s] = present & variant &
                    __builtin_convertvector((n[s] >= GLINT_MULTINOMIAL_EXACT_SPLIT_MIN) & (n[s] <= GLINT_MULTINOMIAL_EXACT_ALL_MAX) & (n[s] * total >= real(1)),
                                            i32x8);

@@ -40,6 +40,8 @@
 //                                          times; prints the least pass's ns a query. Count the
 //                                          queries alone with --toggle-collect='lobe_forest_eval*'
 // Each prints a sum of its results, so that two builds can be checked to compute the same.
+// GLINT_LANES=1 in the environment limits the vector code to its AVX2 build, 0 to the baseline
+// (glint::detail::lanes_limit; valgrind runs the AVX2 build, as its CPU has no AVX-512).
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -140,6 +142,7 @@ void time_frames(const char* mode, int frames, F&& frame) {
 __attribute__((noinline)) float lobe_forest_eval(const glint_bench::forest& f, const glint_bench::query& q) { return f.eval(q.fp, q.s); }
 
 int main(int argc, char** argv) {
+    if (const char* lanes = std::getenv("GLINT_LANES")) glint::detail::lanes_limit = std::atoi(lanes);
     const char* mode = argc > 1 ? argv[1] : "";
     double sum = 0;
     const bool rows = !std::strncmp(mode, "point-rows", 10);

@@ -329,17 +329,42 @@ __attribute__((always_inline)) static inline void glint_lanes_transpose8(const E
     }
 }
 
-// The pass for slot-wise groups of the eight lanes: the leaders' pass where a lane has followers,
-// then every threshold where it gave up (glint_multinomial_exact_all_groups' order).
-template <int T>
-__attribute__((always_inline)) static inline void glint_ibl_lanes_pass(GLINT_INOUT(glint_ibl_lanes) d, bool followers, const uint lanes[8], const uint frac[8],
-                                                                    const uint state[8], const uint step[8], const real weight[8],
-                                                                    const real frac_weight[8]) {
-    if (followers &&
-        glint_multinomial_exact_lanes_pass<T>(d.lead_c, d.lead_full, d.has_follower, GLINT_MULTINOMIAL_FOLLOWER_DIGITS, lanes, frac, state, step, weight,
-                                              frac_weight, d.weighted))
+// The jobs of a draw, slot-wise lane groups of the eight lanes, drawn two at a time
+// (glint_multinomial_exact_lanes_pass with J = 2): [j][lane] the pending jobs'.
+struct glint_ibl_lanes_jobs {
+    uint lanes[2][8], frac[2][8], state[2][8], step[2][8];
+    real weight[2][8], frac_weight[2][8];
+    bool followers;
+    int pending;
+};
+
+// The pending jobs' pass: the leaders' pass where a lane has followers, then every threshold where
+// it gave up (glint_multinomial_exact_all_groups' order).
+template <int T, int J>
+__attribute__((always_inline)) static inline void glint_ibl_lanes_pass(GLINT_INOUT(glint_ibl_lanes) d, glint_ibl_lanes_jobs& p) {
+    if (p.followers && glint_multinomial_exact_lanes_pass<T, J>(d.lead_c, d.lead_full, d.has_follower, GLINT_MULTINOMIAL_FOLLOWER_DIGITS, p.lanes, p.frac,
+                                                                p.state, p.step, p.weight, p.frac_weight, d.weighted))
         return;
-    glint_multinomial_exact_lanes_pass<T>(d.c, d.full, d.has_follower, 32, lanes, frac, state, step, weight, frac_weight, d.weighted);  // 32: never stops
+    glint_multinomial_exact_lanes_pass<T, J>(d.c, d.full, d.has_follower, 32, p.lanes, p.frac, p.state, p.step, p.weight, p.frac_weight,
+                                             d.weighted);  // 32: never stops
+}
+
+// A job, drawn with the one pending before it, or left pending.
+template <int T>
+__attribute__((always_inline)) static inline void glint_ibl_lanes_job(GLINT_INOUT(glint_ibl_lanes) d, glint_ibl_lanes_jobs& p, bool followers,
+                                                                   const glint_u32x8& lanes, const glint_u32x8& frac, const glint_u32x8& state,
+                                                                   const glint_u32x8& step, const glint_realx8& weight, const glint_realx8& frac_weight) {
+    const int j = p.pending;
+    std::memcpy(p.lanes[j], &lanes, sizeof(lanes)), std::memcpy(p.frac[j], &frac, sizeof(frac));
+    std::memcpy(p.state[j], &state, sizeof(state)), std::memcpy(p.step[j], &step, sizeof(step));
+    std::memcpy(p.weight[j], &weight, sizeof(weight)), std::memcpy(p.frac_weight[j], &frac_weight, sizeof(frac_weight));
+    p.followers = (j != 0 && p.followers) || followers;
+    if (j == 0) {
+        p.pending = 1;
+        return;
+    }
+    glint_ibl_lanes_pass<T, 2>(d, p);
+    p.pending = 0;
 }
 
 template <int T>
@@ -378,6 +403,8 @@ __attribute__((always_inline)) static inline void glint_ibl_lanes_draw_of(GLINT_
     std::memcpy(d.batched, &batch_count, sizeof(batch_count));
     u32x8 has_follower;
     std::memcpy(&has_follower, d.has_follower, sizeof(has_follower));
+    glint_ibl_lanes_jobs jobs;
+    jobs.pending = 0, jobs.followers = false;
     for (int s = 0; s < 12; ++s) {
         const i32x8 in_pass = batch[s];
         if (glint_lanes_all_zero(reinterpret_cast<u32x8>(in_pass))) continue;
@@ -402,17 +429,12 @@ __attribute__((always_inline)) static inline void glint_ibl_lanes_draw_of(GLINT_
         const realx8 frac_share = in ? weight_in * (n[s] - __builtin_convertvector(whole, realx8)) : realx8{};
         const realx8 frac_weight_a = (reinterpret_cast<maskx8>(two)) ? realx8{} : frac_share;
         const u32x8 step = y | 1u;
-        uint la[8], fa[8], lb[8], fb[8], sa[8], sb[8], st[8];
-        real w[8], fwa[8], fwb[8];
-        std::memcpy(la, &lanes_a, sizeof(la)), std::memcpy(fa, &frac_a, sizeof(fa)), std::memcpy(sa, &x, sizeof(sa)), std::memcpy(st, &step, sizeof(st));
-        std::memcpy(w, &weight_in, sizeof(w)), std::memcpy(fwa, &frac_weight_a, sizeof(fwa));
         const bool followers = !glint_lanes_all_zero(has_follower & pass);
-        glint_ibl_lanes_pass<T>(d, followers, la, fa, sa, st, w, fwa);
+        glint_ibl_lanes_job<T>(d, jobs, followers, lanes_a, frac_a, x, step, weight_in, frac_weight_a);
         if (glint_lanes_all_zero(lanes_b)) continue;
-        std::memcpy(lb, &lanes_b, sizeof(lb)), std::memcpy(fb, &frac_b, sizeof(fb)), std::memcpy(sb, &z, sizeof(sb));
-        std::memcpy(fwb, &frac_share, sizeof(fwb));
-        glint_ibl_lanes_pass<T>(d, followers, lb, fb, sb, st, w, fwb);
+        glint_ibl_lanes_job<T>(d, jobs, followers, lanes_b, frac_b, z, step, weight_in, frac_share);
     }
+    if (jobs.pending != 0) glint_ibl_lanes_pass<T, 1>(d, jobs);  // the last job alone
 }
 
 GLINT_LANES_BODY

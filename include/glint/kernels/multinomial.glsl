@@ -711,65 +711,79 @@ __attribute__((always_inline)) static inline bool glint_lanes_all_zero(const gli
 #endif
 }
 
-template <int T>
+// The pass of J = 1 or 2 jobs of eight lane groups under the same thresholds (two slots of the
+// same eight pixels): job j's lanes, fractional trials, words and weights at [j][lane]. Their
+// digits are compared in one loop, which runs until both jobs are decided: each threshold's
+// digit is taken once for both, the two jobs' word chains overlap, and a loop ends (a
+// mispredicted branch) once for two jobs. Adds job 0's weighted counts to weighted[k][lane], then
+// job 1's: the sums of two passes, in their order. Returns false, adding nothing, where a lane of
+// stop_lanes still has open trials at stop_digit (the followers' leaders' pass gives up).
+template <int T, int J>
 __attribute__((always_inline)) static inline bool glint_multinomial_exact_lanes_pass(const uint (&c)[8][8], const uint (&full)[8][8], const uint stop_lanes[8],
-                                                                                    int stop_digit, const uint lanes_in[8], const uint frac_in[8],
-                                                                                    const uint state_in[8], const uint step_in[8],
-                                                                                    const real weight_in[8], const real frac_weight_in[8],
+                                                                                    int stop_digit, const uint (&lanes_in)[2][8], const uint (&frac_in)[2][8],
+                                                                                    const uint (&state_in)[2][8], const uint (&step_in)[2][8],
+                                                                                    const real (&weight_in)[2][8], const real (&frac_weight_in)[2][8],
                                                                                     real (&weighted)[8][8]) {
     typedef glint_u32x8 u32x8;
     typedef glint_i32x8 i32x8;
-    typedef glint_u64x4 u64x4;
     typedef glint_realx8 realx8;
-    u32x8 lanes, frac, state, step, stop;
-    realx8 weight, frac_weight;
-    std::memcpy(&lanes, lanes_in, sizeof(lanes)), std::memcpy(&frac, frac_in, sizeof(frac));
-    std::memcpy(&state, state_in, sizeof(state)), std::memcpy(&step, step_in, sizeof(step));
+    u32x8 stop, threshold[8], f[8];
     std::memcpy(&stop, stop_lanes, sizeof(stop));
-    std::memcpy(&weight, weight_in, sizeof(weight)), std::memcpy(&frac_weight, frac_weight_in, sizeof(frac_weight));
-    u32x8 threshold[8], open[8], below[8];  // the first T are used
-    for (int k = 0; k < T; ++k) {
-        u32x8 f;
-        std::memcpy(&threshold[k], c[k], sizeof(threshold[k])), std::memcpy(&f, full[k], sizeof(f));
-        open[k] = lanes & ~f;
-        below[k] = lanes & f;
+    for (int k = 0; k < T; ++k) std::memcpy(&threshold[k], c[k], sizeof(threshold[k])), std::memcpy(&f[k], full[k], sizeof(f[k]));
+    u32x8 lanes[2], state[2], step[2], open[2][8], below[2][8];  // the first T thresholds are used
+    for (int j = 0; j < J; ++j) {
+        std::memcpy(&lanes[j], lanes_in[j], sizeof(lanes[j]));
+        std::memcpy(&state[j], state_in[j], sizeof(state[j])), std::memcpy(&step[j], step_in[j], sizeof(step[j]));
+        for (int k = 0; k < T; ++k) {
+            open[j][k] = lanes[j] & ~f[k];
+            below[j][k] = lanes[j] & f[k];
+        }
     }
     // Two digits between the tests for open trials, as glint_multinomial_exact_all_groups_pass.
     for (int digit = 0; digit < 32; digit += 2) {
-        u32x8 any = open[0];
-        for (int k = 1; k < T; ++k) any |= open[k];
+        u32x8 any = open[0][0];
+        for (int j = 0; j < J; ++j)
+            for (int k = 0; k < T; ++k) any |= open[j][k];
         if (glint_lanes_all_zero(any)) break;
-        if (digit == stop_digit) {
-            u64x4 stopped = reinterpret_cast<u64x4>(any & stop);
-            if ((stopped[0] | stopped[1] | stopped[2] | stopped[3]) != 0u) return false;
-        }
+        if (digit == stop_digit && !glint_lanes_all_zero(any & stop)) return false;
         for (int twice = 0; twice < 2; ++twice) {
-            u32x8 word = state;
-            glint_hash_u32_vector(word);
-            state += step;
+            u32x8 word[2];
+            for (int j = 0; j < J; ++j) {
+                word[j] = state[j];
+                glint_hash_u32_vector(word[j]);
+                state[j] += step[j];
+            }
             for (int k = 0; k < T; ++k) {
                 u32x8 c_digit = (u32x8{} + 0u) - (threshold[k] >> 31u);
                 threshold[k] <<= 1u;
-                u32x8 decided = open[k] & (word ^ c_digit);
-                below[k] |= decided & c_digit;
-                open[k] &= ~decided;
+                for (int j = 0; j < J; ++j) {
+                    u32x8 decided = open[j][k] & (word[j] ^ c_digit);
+                    below[j][k] |= decided & c_digit;
+                    open[j][k] &= ~decided;
+                }
             }
         }
     }
-    u32x8 previous = {};
-    for (int k = 0; k < T; ++k) {
-        u32x8 in_bin = below[k] & ~previous;
-        previous = below[k];
-        u32x8 x = in_bin & ~frac;  // glint_bit_count lane-wise
-        x = x - ((x >> 1u) & 0x55555555u);
-        x = (x & 0x33333333u) + ((x >> 2u) & 0x33333333u);
-        x = (x + (x >> 4u)) & 0x0f0f0f0fu;
-        x = (x * 0x01010101u) >> 24u;
-        i32x8 frac_in_bin = -((in_bin & frac) != 0u);
-        realx8 sum;
-        std::memcpy(&sum, weighted[k], sizeof(sum));
-        sum += __builtin_convertvector(reinterpret_cast<i32x8>(x), realx8) * weight + __builtin_convertvector(frac_in_bin, realx8) * frac_weight;
-        std::memcpy(weighted[k], &sum, sizeof(sum));
+    for (int j = 0; j < J; ++j) {
+        u32x8 frac;
+        realx8 weight, frac_weight;
+        std::memcpy(&frac, frac_in[j], sizeof(frac));
+        std::memcpy(&weight, weight_in[j], sizeof(weight)), std::memcpy(&frac_weight, frac_weight_in[j], sizeof(frac_weight));
+        u32x8 previous = {};
+        for (int k = 0; k < T; ++k) {
+            u32x8 in_bin = below[j][k] & ~previous;
+            previous = below[j][k];
+            u32x8 x = in_bin & ~frac;  // glint_bit_count lane-wise
+            x = x - ((x >> 1u) & 0x55555555u);
+            x = (x & 0x33333333u) + ((x >> 2u) & 0x33333333u);
+            x = (x + (x >> 4u)) & 0x0f0f0f0fu;
+            x = (x * 0x01010101u) >> 24u;
+            i32x8 frac_in_bin = -((in_bin & frac) != 0u);
+            realx8 sum;
+            std::memcpy(&sum, weighted[k], sizeof(sum));
+            sum += __builtin_convertvector(reinterpret_cast<i32x8>(x), realx8) * weight + __builtin_convertvector(frac_in_bin, realx8) * frac_weight;
+            std::memcpy(weighted[k], &sum, sizeof(sum));
+        }
     }
     return true;
 }

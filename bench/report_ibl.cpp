@@ -121,13 +121,23 @@ section ibl_section(double min_time) {
         benchmark::DoNotOptimize(acc);
     };
     // Each frame in round_count rounds (report.hpp), the least time of each; the linear knob's
-    // smooth and glint frames also on all cores (add_all_cores).
+    // smooth and glint frames also on all cores (add_all_cores). Where the vector code runs its
+    // AVX-512 build, K = 4's linear glint frame also with the AVX2 build alone (lanes_limit).
+    const int lanes = glint::detail::glsl::kernels<float>::glint_cpu_lanes();
     for (int round = 0; round < round_count; ++round)
         for (std::size_t e = 0; e < envs.size(); ++e)
             for (int mode = 0; mode < 3; ++mode) {
                 const glint::environment* env = envs[e].get();
                 add("ibl_" + std::to_string(e) + "_" + std::to_string(mode) + round_suffix(round),
                     [frame_rows, env, mode](std::size_t it) { frame_rows(env, mode, 0, 1, it); }, min_time);
+                if (e == 0 && mode == 1 && lanes == 2)
+                    add("ibl_avx2_" + std::to_string(e) + round_suffix(round),
+                        [frame_rows, env](std::size_t it) {
+                            glint::detail::lanes_limit = 1;
+                            frame_rows(env, 1, 0, 1, it);
+                            glint::detail::lanes_limit = 2;
+                        },
+                        min_time);
                 if (e % 2 == 0 && mode < 2)
                     add_all_cores("ibl_all_cores_" + std::to_string(e) + "_" + std::to_string(mode) + round_suffix(round),
                                   [frame_rows, env, mode](int first, int step, std::size_t it) { frame_rows(env, mode, first, step, it); }, min_time);
@@ -156,6 +166,14 @@ section ibl_section(double min_time) {
         csv << "ibl," << labels[e] << ",float,glints/smooth frame time," << s1 / s0 << "," << s1 << "," << s1 / s0 << ",smooth IBL frame\n";
         csv << "ibl," << labels[e] << " one lattice point,float,glints/smooth frame time," << s2 / s0 << "," << s2 << "," << s2 / s0 << ",smooth IBL frame\n";
     }
+    const char* path_names[] = {"the baseline code (no AVX2)", "its AVX2 build (this CPU has no AVX-512)", "its AVX-512 build (AVX2 code built with AVX-512 F, VL, DQ and BW, 256-bit vectors)"};
+    t << "\nThe glint frames' vector code ran " << path_names[lanes] << " (glint_cpu_lanes, kernels/core.glsl)";
+    if (lanes == 2) {
+        const double s0 = ns.at("ibl_0_0"), sv = ns.at("ibl_avx2_0");
+        t << "; with its AVX2 build alone, " << labels[0] << ": " << fmt(sv * 1e-3, "%.0f") << " us a frame, " << fmt(sv / s0) << "x smooth";
+        csv << "ibl," << labels[0] << " AVX2 build alone,float,glints/smooth frame time," << sv / s0 << "," << sv << "," << sv / s0 << ",smooth IBL frame\n";
+    }
+    t << ".\n";
     t << "\n\"One lattice point\": glint::grid_pixel_setup with a lattice_u per pixel (one of the footprint's four lattice points, drawn "
          "with probability w_L; the same mean and per-pixel variance; docs/grid.md). \"All cores\" (the linear knob): the smooth and the "
          "glint frame on " << all_cores() << " threads at once, thread t shading rows t, t + " << all_cores() << ", ..., the wall time of a frame "

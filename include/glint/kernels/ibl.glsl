@@ -285,9 +285,9 @@ GLINT_FN glint_grid_estimate glint_ibl_sample(vec2 uv, vec2 duvdx, vec2 duvdy, g
 // pixel v; GPUs run a fragment a thread, so GLSL keeps the single pixel). A pixel's draw is one
 // bit-sliced pass over its vertices' lane groups (glint_multinomial_exact_all_weighted), six of
 // eight groups at the report's density, and the bookkeeping around it is scalar; here slot s's
-// vertices of eight pixels form one pass, each lane with its pixel's thresholds
-// (glint_multinomial_exact_lanes_pass), and the vertices' lanes, weights and root words are set up
-// eight pixels a vector. The counts are the single pixel's, vertex by vertex (the same words,
+// vertices of eight pixels form a lane group of the pass, each lane with its pixel's thresholds,
+// two slots' groups a pass (glint_multinomial_exact_lanes_pass), and the vertices' lanes, weights
+// and root words are set up eight pixels a vector. The counts are the single pixel's, vertex by vertex (the same words,
 // thresholds and trials); only their weighted sums are added in another order, so each estimate
 // equals glint_ibl_sample_pixel's to float rounding and its draws exactly
 // (tests/stat/test_ibl.cpp). The vertices that the pass does not take (N outside 4 to 63 or N total

@@ -215,8 +215,8 @@ struct glint_lattice_triangles {
 typedef uint glint_u32x4 __attribute__((vector_size(16)));
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(GLINT_NO_AVX2)
 GLINT_LANES_BODY void glint_lattice_vertex_hashes_x8_body(glint_u32x4 x0, glint_u32x4 x1, glint_u32x4 x2, glint_u32x4 y0,
-                                                                                    glint_u32x4 y1, glint_u32x4 y2, glint_u32x4 key,
-                                                                                    uint out[3][12]) {
+                                                          glint_u32x4 y1, glint_u32x4 y2, glint_u32x4 key,
+                                                          uint out[3][12]) {
     typedef uint u32x8 __attribute__((vector_size(32)));
     u32x8 x = __builtin_shufflevector(x0, x1, 0, 1, 2, 3, 4, 5, 6, 7);
     u32x8 y = __builtin_shufflevector(y0, y1, 0, 1, 2, 3, 4, 5, 6, 7);
@@ -646,7 +646,7 @@ glint_draw_masks glint_skip_test_masks(GLINT_INOUT(glint_grid_pixel) px, uint co
 #else
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(GLINT_NO_AVX2)
 GLINT_LANES_BODY glint_draw_masks glint_skip_test_masks_x8_body(const glint_grid_pixel& px, const uint corner_key[4],
-                                                                                            const real corner_p[4], int live, bool skip_test) {
+                                                                const real corner_p[4], int live, bool skip_test) {
     typedef uint u32x8 __attribute__((vector_size(32)));
     typedef int i32x8 __attribute__((vector_size(32)));
     typedef real realx8 __attribute__((vector_size(8 * sizeof(real))));
@@ -980,7 +980,7 @@ __attribute__((always_inline, target("avx2"))) static inline void glint_light_la
 }
 
 GLINT_LANES_BODY void glint_grid_sample_lights_x8_body(glint_grid_pixel& px, const glint_grid_params& g,
-                                                                                  const glint_grid_light* lights, int count, glint_grid_estimate* out) {
+                                                       const glint_grid_light* lights, int count, glint_grid_estimate* out) {
     typedef glint_f32x8 f32x8;
     typedef glint_i32x8 i32x8;
     typedef glint_u32x8 u32x8;
@@ -1192,7 +1192,6 @@ GLINT_LANES_BODY
 void glint_lanes_footprint_vertices_body(glint_lanes_vertices& d, int n, const glint_grid_pixel* px, real lod_scale, int drawing, uint seed) {
     typedef glint_u32x8 u32x8;
     typedef glint_i32x8 i32x8;
-    typedef glint_u64x4 u64x4;
     typedef glint_f32x8 f32x8;
     // The pixels' uv and footprints, from scalars in registers (lanes n to 7 repeat pixel n - 1).
     const glint_grid_pixel* q[8];
@@ -1209,8 +1208,7 @@ void glint_lanes_footprint_vertices_body(glint_lanes_vertices& d, int n, const g
     // One lattice point (glint_grid_pixel_setup_stochastic's pixels): glint_lattice_choice lane-wise;
     // its three vertices go to slots 0 to 2 with share 1, as glint_footprint_vertices puts them.
     const i32x8 one_point = lattice_u >= real(0);
-    const u64x4 any_one = reinterpret_cast<u64x4>(one_point);
-    const bool some_one = (any_one[0] | any_one[1] | any_one[2] | any_one[3]) != 0u;
+    const bool some_one = !glint_lanes_all_zero(reinterpret_cast<u32x8>(one_point));
     i32x8 chosen = i32x8{} - 1;
     f32x8 below = {};
     for (int l = 0; l < 4; ++l) {
@@ -1232,8 +1230,7 @@ void glint_lanes_footprint_vertices_body(glint_lanes_vertices& d, int n, const g
         // the IBL's K = 4 frame (glint_frame_loop ibl-rows 4) half the lattice points: 9.10M to
         // 8.58M instructions in the estimates, the least frame 1555-1568 to 1487-1499 us; the
         // zeros' stores left out, 7.45M to 7.40M (DEVELOPERS.md).
-        const u64x4 weighed = reinterpret_cast<u64x4>(wl > real(0));
-        if ((weighed[0] | weighed[1] | weighed[2] | weighed[3]) == 0u) {
+        if (glint_lanes_all_zero(reinterpret_cast<u32x8>(wl > real(0)))) {
             const u32x8 none = {};
             for (int t = 0; t < 3 && some_one; ++t) {
                 const int slot = 4 * t + l;
@@ -1304,7 +1301,7 @@ GLINT_LANES_VARIANTS(void, glint_lanes_footprint_vertices,
 // the footprint is a chain of two square roots and two divisions.
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(GLINT_NO_AVX2)
 GLINT_LANES_BODY void glint_grid_pixels_setup_x8_body(int n, const vec2* uv, const vec2* duvdx, const vec2* duvdy,
-                                                                                 const glint_grid_params& g, const real* lattice_u, glint_grid_pixel* out) {
+                                                      const glint_grid_params& g, const real* lattice_u, glint_grid_pixel* out) {
     typedef glint_f32x8 f32x8;
     typedef glint_i32x8 i32x8;
     int at[8];
@@ -1398,7 +1395,7 @@ GLINT_FN_OUT_OF_LINE void glint_grid_pixels_setup(int count, const vec2* uv, con
 // (the single-pixel fallbacks fill them, as glint_grid_sample_pixel does).
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(GLINT_NO_AVX2)
 GLINT_LANES_BODY void glint_grid_sample_pixels_x8_body(glint_grid_pixel* px, int n, const glint_grid_params& g,
-                                                                                  const glint_grid_light* lights, glint_grid_estimate* out) {
+                                                       const glint_grid_light* lights, glint_grid_estimate* out) {
     typedef glint_f32x8 f32x8;
     typedef glint_i32x8 i32x8;
     typedef glint_u32x8 u32x8;

@@ -459,7 +459,7 @@ GLINT_LANES_VARIANTS(void, glint_ibl_lanes_draw,
 // (the same values bit for bit). Returns the lanes that draw (bit v).
 GLINT_LANES_BODY
 int glint_ibl_lanes_setup_body(GLINT_INOUT(glint_ibl_lanes) d, int n, const glint_grid_pixel* px, GLINT_IN(glint_grid_params) g, GLINT_IN(glint_ibl_levels) lv,
-                          const glint_ibl_indicators* ind, const real* e_d, real d_h, glint_grid_estimate* out) {
+                               const glint_ibl_indicators* ind, const real* e_d, real d_h, glint_grid_estimate* out) {
     typedef glint_u32x8 u32x8;
     typedef glint_i32x8 i32x8;
     typedef glint_realx8 realx8;

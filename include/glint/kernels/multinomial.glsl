@@ -619,8 +619,8 @@ GLINT_FN_OUT_OF_LINE int glint_multinomial_exact_all_groups_x4(const glint_multi
 // glint_multinomial_exact_all_weighted does not call: it draws four groups at a time there.
 GLINT_LANES_BODY
 int glint_multinomial_exact_all_groups_x8_body(const glint_multinomial_thresholds& c, int K, const uint lanes_in[8], const uint frac_in[8],
-                                          const uint state_in[8], const uint step_in[8], const real weight_in[8], const real frac_weight_in[8],
-                                          real weighted[8]) {
+                                               const uint state_in[8], const uint step_in[8], const real weight_in[8], const real frac_weight_in[8],
+                                               real weighted[8]) {
     return glint_multinomial_exact_all_groups<8>(c, K, lanes_in, frac_in, state_in, step_in, weight_in, frac_weight_in, weighted);
 }
 GLINT_LANES_VARIANTS(int, glint_multinomial_exact_all_groups_x8,

@@ -58,6 +58,24 @@ __attribute__((always_inline)) static inline void glint_hash_u32_vector(V& x) {
     x ^= x >> 16u;
 }
 
+// C++ only: glint_hash_u32 of a ^ b for many pairs, its first step taken into the operands. That
+// step, x ^ x >> 16, is linear over XOR: (a ^ b) ^ (a ^ b) >> 16 = (a ^ a >> 16) ^ (b ^ b >> 16). So
+// where each word meets several others (the grid's skip tests: every vertex word against every
+// slope-corner key), each operand takes the step once (glint_hash_u32_first_step, in place) and
+// the hash of a pair is glint_hash_u32_vector_rest of their XOR: two operations fewer a pair, the
+// same words bit for bit.
+template <class V>
+__attribute__((always_inline)) static inline void glint_hash_u32_first_step(V& x) {
+    x ^= x >> 16u;
+}
+template <class V>
+__attribute__((always_inline)) static inline void glint_hash_u32_vector_rest(V& x) {
+    x *= 0x7feb352du;
+    x ^= x >> 15u;
+    x *= 0x846ca68bu;
+    x ^= x >> 16u;
+}
+
 // C++ only: eight values held as two vectors of four (value 4 h + i in lane i of v[h]) scaled
 // down by their total where it is above 1, into out, as the GLSL loops of glint_ibl_probabilities
 // and glint_multinomial_tree_root do it: the total summed in index order, which a float sum must

@@ -666,10 +666,13 @@ GLINT_LANES_BODY glint_draw_masks glint_skip_test_masks_x8_body(const glint_grid
         std::memcpy(&scale, px.skip_scale + 4 * b, sizeof(scale));
         if (one_block)  // lanes 4..7: words glint_grid_skip_inputs did not fill, kept out of the arithmetic
             for (int i = 4; i < 8; ++i) word[i] = 0u, scale[i] = real(0);
+        glint_hash_u32_first_step(word);  // core.glsl: the first step once a block, not once a corner
         i32x8 bits = {};
         for (int j = 0; j < 4; ++j) {
-            u32x8 h = word ^ corner_key[j];
-            glint_hash_u32_vector(h);
+            uint key_step = corner_key[j];
+            glint_hash_u32_first_step(key_step);
+            u32x8 h = word ^ key_step;
+            glint_hash_u32_vector_rest(h);
             realx8 below = __builtin_convertvector(reinterpret_cast<i32x8>(h >> 8u), realx8);  // below 2^24: exact
             realx8 bound = scale * (corner_p[j] * real(16777216.0)) + real(167.77216);
             bits |= __builtin_convertvector(below < bound, i32x8) & (1 << j);
@@ -856,6 +859,7 @@ struct glint_light_lanes {
     glint_f32x8 corner_p[4];  // p_j where corner j is live (m_j > 0 and p_j > 0), else 0
     glint_f32x8 p24[4];       // the skip test's p_j 2^24 (FLT_MAX for a published variant: see below)
     glint_u32x8 key[4];       // glint_slope_cell_key of corner j
+    glint_u32x8 key_step[4];  // glint_hash_u32_first_step(key[j]), for the skip test (core.glsl)
     glint_i32x8 bit[4];       // bit j where corner j is live
     glint_f32x8 expected;     // E[R]
     glint_i32x8 smooth;       // all ones where R = E[R] is returned
@@ -928,6 +932,8 @@ __attribute__((always_inline, target("avx2"))) static inline bool glint_light_la
         p[j] = point ? p_point : p_extended;
         o.key[j] = reinterpret_cast<u32x8>(cx) * 0x9e3779b9u + reinterpret_cast<u32x8>(cy);  // glint_slope_cell_key
         glint_hash_u32_vector(o.key[j]);
+        o.key_step[j] = o.key[j];
+        glint_hash_u32_first_step(o.key_step[j]);
     }
     o.expected = (o.mu[0] * p[0] + o.mu[1] * p[1]) + (o.mu[2] * p[2] + o.mu[3] * p[3]);
     f32x8 q[4];
@@ -954,15 +960,15 @@ __attribute__((always_inline, target("avx2"))) static inline bool glint_light_la
     return true;
 }
 
-// The skip test's bits (bit j where the vertex may draw at corner j) of a vertex with first hash
-// word `word` and bound scale `scale` (glint_grid_pixel's skip_scale), lane-wise against each
-// lane's light.
-__attribute__((always_inline, target("avx2"))) static inline glint_i32x8 glint_light_lanes_skip_bits(const glint_light_lanes& o, const glint_u32x8& word,
+// The skip test's bits (bit j where the vertex may draw at corner j) of a vertex whose first hash
+// word has first step `word_step` (glint_hash_u32_first_step, core.glsl) and whose bound scale is
+// `scale` (glint_grid_pixel's skip_scale), lane-wise against each lane's light.
+__attribute__((always_inline, target("avx2"))) static inline glint_i32x8 glint_light_lanes_skip_bits(const glint_light_lanes& o, const glint_u32x8& word_step,
                                                                                                      const glint_f32x8& scale) {
     glint_i32x8 b = {};
     for (int j = 0; j < 4; ++j) {
-        glint_u32x8 h = o.key[j] ^ word;
-        glint_hash_u32_vector(h);
+        glint_u32x8 h = o.key_step[j] ^ word_step;  // glint_cell_draw_word's hash after its first step
+        glint_hash_u32_vector_rest(h);
         const glint_f32x8 below = __builtin_convertvector(reinterpret_cast<glint_i32x8>(h >> 8u), glint_f32x8);  // below 2^24: exact
         b |= (below < scale * o.p24[j] + 167.77216f) & o.bit[j];                                                   // 1e-5 2^24
     }
@@ -996,7 +1002,9 @@ GLINT_LANES_BODY void glint_grid_sample_lights_x8_body(glint_grid_pixel& px, con
     // The skip test (glint_light_lanes_setup's bound), vertex by vertex against the eight lights.
     i32x8 bits[12], any = {};
     for (int i = 0; i < px.v.count; ++i) {
-        bits[i] = glint_light_lanes_skip_bits(o, u32x8{} + px.v.hash_x[i], f32x8{} + px.skip_scale[i]);
+        uint word_step = px.v.hash_x[i];
+        glint_hash_u32_first_step(word_step);
+        bits[i] = glint_light_lanes_skip_bits(o, u32x8{} + word_step, f32x8{} + px.skip_scale[i]);
         any |= bits[i];
     }
     // The draws of the lanes that draw (lanes past count have E[R] = 0), in glint_grid_sample_pixel's
@@ -1425,6 +1433,7 @@ GLINT_LANES_BODY void glint_grid_sample_pixels_x8_body(glint_grid_pixel* px, int
         std::memcpy(&share, d.share[s], sizeof(share)), std::memcpy(&weight, d.weight[s], sizeof(weight)), std::memcpy(&hx, d.hash_x[s], sizeof(hx));
         const f32x8 trials = N * share, zero = {};
         const f32x8 scale = ((trials > 2.0f) ? trials + 1.0f : zero + 2.0f) * ((weight > 0.0f) ? zero + 1.0001f : zero);
+        glint_hash_u32_first_step(hx);  // the skip test's share of the word (core.glsl)
         bits[s] = glint_light_lanes_skip_bits(o, hx, scale) & (weight > 0.0f);
         any |= bits[s];
     }

@@ -371,3 +371,64 @@ TEST_CASE("the walk's tail sum stops early without changing a bit of it, in floa
     MESSAGE(compared << " tail sums, " << differ << " differ from the sum over every mass");
     CHECK(differ == 0);
 }
+
+// The sparse draw's decision before the walk (glint_binomial_walk_sparse_count) must give the
+// walk's own count (glint_binomial_walk_steps) bit for bit wherever it decides, in float and
+// double: M from 3 to 40, q from 1e-7 to past M q = 1/4 (where it must leave every draw to the
+// walk), v at 2 ulps either side of its two bounds, of M q and of the walk's thresholds P(n > 0)
+// and P(n > 1), and 40 hashed uniforms below 2 M q. `lax` is a deliberately wrong decision, count
+// 1 from (M q)^2 / 4 on instead of (M q)^2 / 2: below P(n > 1) where M q nears 1/4, it must
+// differ from the walk somewhere, which shows that the inputs reach the bounds' edges.
+template <class real>
+long walk_sparse_differences(bool lax, long& decided, long& compared) {
+    using KR = glint::detail::glsl::kernels<real>;
+    long differ = 0;
+    for (int M = 3; M <= 40; ++M)
+        for (double lq = -7; lq <= std::log10(0.3 / M); lq += 0.125) {
+            for (const double qd : {std::pow(10.0, lq), 0.25 / M})
+                for (int side = -2; side <= 2; ++side) {
+                    real q = static_cast<real>(qd);
+                    for (int i = 0; i < 2 * side; ++i) q = std::nextafter(q, real(1));
+                    for (int i = 0; i < -2 * side; ++i) q = std::nextafter(q, real(0));
+                    if (side != 0 && qd != 0.25 / M) continue;  // ulps either side only at the switch
+                    const real mq = real(M) * q;
+                    const double qq = static_cast<double>(q), p0 = std::pow(1 - qq, M), p1 = M * qq * std::pow(1 - qq, M - 1);
+                    std::vector<real> edges = {mq, real(0.5) * mq * mq * real(1.0009765625), mq * (real(1) - real(0.5) * mq) * real(0.9990234375),
+                                               KR::glint_binomial_walk_start(M, q).survival, static_cast<real>(1 - p0 - p1), real(0.25) * mq * mq};
+                    std::vector<real> vs;
+                    for (real t : edges) {
+                        if (!(t > real(0) && t < real(1))) continue;
+                        real below = t, above = t;
+                        for (int i = 0; i < 3; ++i) {
+                            vs.push_back(below), vs.push_back(above);
+                            below = std::nextafter(below, real(0)), above = std::nextafter(above, real(1));
+                        }
+                    }
+                    for (std::uint32_t i = 0; i < 40; ++i) {
+                        const real u = glint::open_unit_from_bits<real>(glint::pcg3d(glm::uvec3(i, static_cast<std::uint32_t>(M), static_cast<std::uint32_t>(lq * 8 + 100))).x);
+                        vs.push_back(real(2) * mq * u);
+                    }
+                    for (real v : vs) {
+                        int sparse = KR::glint_binomial_walk_sparse_count(M, q, v);
+                        if (lax && mq < real(0.25) && v < mq && v >= real(0.25) * mq * mq) sparse = 1;
+                        if (sparse < 0) continue;
+                        ++decided;
+                        differ += sparse != KR::glint_binomial_walk_steps(M, q, v);
+                    }
+                    compared += static_cast<long>(vs.size());
+                }
+        }
+    return differ;
+}
+
+TEST_CASE("a sparse walk's count decided from bounds before the walk is the walk's own, in float and double") {
+    long decided = 0, compared = 0;
+    const long differ = walk_sparse_differences<float>(false, decided, compared) + walk_sparse_differences<double>(false, decided, compared);
+    MESSAGE(compared << " draws, " << decided << " decided before the walk, " << differ << " differ from the walk's count");
+    CHECK(decided > compared / 4);
+    CHECK(differ == 0);
+    long lax_decided = 0, lax_compared = 0;
+    const long lax_differ = walk_sparse_differences<float>(true, lax_decided, lax_compared) + walk_sparse_differences<double>(true, lax_decided, lax_compared);
+    MESSAGE("the lax variant: " << lax_differ << " of " << lax_decided << " decided draws differ");
+    CHECK(lax_differ > 0);
+}

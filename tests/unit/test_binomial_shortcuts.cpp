@@ -323,3 +323,79 @@ TEST_CASE("the far end's exponent bound fires only where log1p and exp give 0, a
     CHECK(fired > consulted / 4);
     CHECK(wrong_fired_on_nonzero > 0);
 }
+
+// glint_binomial_unbiased_sparse (the grid's draws take it first) must give the mean-preserving
+// sampler's count bit for bit wherever it decides, in float and double: N on both sides of the
+// walk's ends (32, 40) and up to 1e5, p from 1e-7 to 1/2, u1 at 2 ulps either side of every
+// threshold of the shortcuts above and of the sparse walk's bounds for both components, u2 at and
+// around the component split, the clamped-mass bound and fixed values. `lax` is a deliberately wrong
+// shortcut: the sure middle's count 1 without its clamped-mass test, and the walk's 1 without its
+// bound on P(n > 1); it must differ from the sampler somewhere, which shows that the inputs reach
+// past the bounds.
+template <class real>
+long sparse_differences(bool lax, long& decided, long& checked) {
+    using KR = K<real>;
+    long differ = 0;
+    for (int method = 0; method <= 2; ++method)
+        for (double nd : {2.5, 3.0, 4.75, 7.2, 10.5, 20.3, 31.9, 32.0, 32.5, 39.9, 40.0, 40.5, 60.0, 100.0, 176.0, 1000.0, 1e4, 1e5})
+            for (double pd : {1e-7, 1e-5, 1e-4, 3e-4, 1e-3, 3e-3, 0.01, 0.03, 0.1, 0.2, 0.5, 0.25 / nd, 0.2 / nd, 2.0 / nd, 16.0 / nd, 17.5 / nd}) {
+                const real N = static_cast<real>(nd), p = static_cast<real>(pd);
+                if (!(p <= real(0.5))) continue;
+                std::vector<real> u1s = u1_values(N, p, method), edges;
+                const int Na = static_cast<int>(N);
+                for (int M : {Na, Na + 1}) {
+                    const real mq = real(M) * p;
+                    edges.insert(edges.end(), {mq, real(0.5) * mq * mq * real(1.0009765625), mq * (real(1) - real(0.5) * mq) * real(0.9990234375),
+                                               real(0.5) * mq * mq});
+                    if (M >= 2 && M <= 40) edges.push_back(KR::glint_binomial_walk_start(M, p).survival);
+                }
+                for (real t : edges) {
+                    if (!(t >= std::numeric_limits<real>::min() && t < 1)) continue;
+                    real below = t, above = t;
+                    for (int i = 0; i < 3; ++i) {
+                        u1s.insert(u1s.end(), {below, above});
+                        below = std::nextafter(below, real(0)), above = std::nextafter(above, real(1));
+                    }
+                }
+                std::vector<real> u2s = {real(0x1p-24), real(0.0137), real(0.5), real(0.77), real(1) - real(0x1p-24)};
+                for (real t : {N - real(Na), KR::glint_binomial_clamped_mass_bound(N * p)})
+                    if (t > 0 && t < 1) u2s.insert(u2s.end(), {std::nextafter(t, real(0)), t, std::nextafter(t, real(1))});
+                for (real u1 : u1s)
+                    for (real u2 : u2s) {
+                        real s = KR::glint_binomial_unbiased_sparse(N, p, u1, u2, method);
+                        if (lax && s < 0 && method != KR::GLINT_POW_NAIVE && p > real(0)) {
+                            const bool middle = N >= KR::GLINT_BINOMIAL_WALK_END && N * p < KR::GLINT_BINOMIAL_BUSY_LAMBDA &&
+                                                KR::glint_binomial_surely_middle(N, p, u1, method);
+                            const real mq = real(u2 < N - real(Na) ? Na + 1 : Na) * p;
+                            const bool walk = N > real(2) && N <= KR::GLINT_BINOMIAL_WALK_FULL && mq < real(0.25) && u1 < mq;
+                            if (middle) s = real(1);
+                            if (walk) s = N / real(u2 < N - real(Na) ? Na + 1 : Na);
+                        }
+                        ++checked;
+                        if (s < 0) continue;
+                        ++decided;
+                        const real full = KR::glint_binomial_unbiased(N, p, u1, u2, method).positive;
+                        if (s != full && differ++ < 5 && !lax) {
+                            CAPTURE(method);
+                            CAPTURE(N);
+                            CAPTURE(p);
+                            CAPTURE(u1);
+                            CAPTURE(u2);
+                            CHECK(s == full);
+                        }
+                    }
+            }
+    return differ;
+}
+
+TEST_CASE("a sparse draw's count from the shortcut is the mean-preserving sampler's (float and double), and a lax shortcut differs") {
+    long decided = 0, checked = 0;
+    const long differ = sparse_differences<float>(false, decided, checked) + sparse_differences<double>(false, decided, checked);
+    MESSAGE(checked << " draws, " << decided << " decided by the sparse shortcut, " << differ << " differ from the sampler");
+    CHECK(decided > checked / 10);
+    CHECK(differ == 0);
+    long lax_decided = 0, lax_checked = 0;
+    const long lax_differ = sparse_differences<float>(true, lax_decided, lax_checked) + sparse_differences<double>(true, lax_decided, lax_checked);
+    MESSAGE("the lax shortcut: " << lax_differ << " of " << lax_decided << " decided draws differ");
+    CHECK(lax_differ > 0);
+}

@@ -1168,6 +1168,14 @@ GLINT_FN glint_binomial glint_binomial_unbiased_sure_middle(real N, real p, real
     return glint_binomial_pair(G, N - G);
 }
 
+// Where u1 is surely above p^N and below 1 - (1 - p)^N, so that no gate fires, and the middle's
+// parameters need no ends (glint_binomial_unbiased_rest says why these bounds).
+GLINT_FN bool glint_binomial_surely_middle(real N, real p, real u1, int method) {
+    return method != GLINT_POW_NAIVE && glint_binomial_middle_needs_no_ends(N, min(p, real(1) - p)) &&
+           u1 * glint_binomial_exp_taylor3(real(0.999) * N * (real(1) - p)) >= real(1.001) &&
+           (real(1) - u1 - real(1e-6)) * glint_binomial_exp_taylor3(real(0.999) * N * p) >= real(1.001);
+}
+
 // glint_binomial_unbiased (below) where the near-end gate does not surely fire, N and p clamped.
 GLINT_FN_OUT_OF_LINE glint_binomial glint_binomial_unbiased_rest(real N, real p, real u1, real u2, int method) {
     if (N <= real(2)) return glint_binomial_unbiased_small(N, p, u1);
@@ -1182,9 +1190,7 @@ GLINT_FN_OUT_OF_LINE glint_binomial glint_binomial_unbiased_rest(real N, real p,
     // C++ the sure middle takes glint_binomial_unbiased_sure_middle; GLSL keeps one path for both,
     // so that the middle's setup is inlined once (twice made the frames of examples/gl/glint_gl
     // slower on llvmpipe).
-    bool surely_middle = method != GLINT_POW_NAIVE && glint_binomial_middle_needs_no_ends(N, min(p, real(1) - p)) &&
-                         u1 * glint_binomial_exp_taylor3(real(0.999) * N * (real(1) - p)) >= real(1.001) &&
-                         (real(1) - u1 - real(1e-6)) * glint_binomial_exp_taylor3(real(0.999) * N * p) >= real(1.001);
+    bool surely_middle = glint_binomial_surely_middle(N, p, u1, method);
 #if !defined(GLINT_GLSL)
     if (surely_middle) return glint_binomial_unbiased_sure_middle(N, p, u2);
 #endif
@@ -1237,6 +1243,32 @@ GLINT_FN_INLINE glint_binomial glint_binomial_unbiased(real N, real p, real u1, 
     }
 #endif
     return glint_binomial_unbiased_rest(N, p, u1, u2, method);  // one call: GLSL inlines it once
+}
+
+// The mean-preserving sampler's positive count (glint_binomial_unbiased(N, p, u1, u2,
+// method).positive) where a sparse draw's bounds decide it without the walk or the middle, else -1:
+// for 2 < N <= GLINT_BINOMIAL_MAX_N, p <= 1/2 and a method other than naive (where the sampler
+// clamps neither), 0 where the near-end gate surely fires; for N up to WALK_FULL (where the walk
+// draws with the u2 it is given) the walk's sparse count (glint_binomial_walk_sparse_count),
+// scaled as the walk scales it (1 becomes N / M); from WALK_END on, where the busy middle does not
+// apply (N p below BUSY_LAMBDA), 1 where the sure middle's count is surely its clamp's
+// (glint_binomial_surely_middle, glint_binomial_surely_clamped). The sampler's own steps in its
+// own order, without its calls, dispatch and other paths: the grid's draws (behind its skip test,
+// so sparse) take this first. tests/unit/test_binomial_shortcuts.cpp compares it with the
+// sampler at and around every bound.
+GLINT_FN real glint_binomial_unbiased_sparse(real N, real p, real u1, real u2, int method) {
+    if (!(method != GLINT_POW_NAIVE && N > real(2) && N <= GLINT_BINOMIAL_MAX_N && p >= real(0) && p <= real(0.5))) return real(-1);
+    if (glint_binomial_surely_near_end(N, p, u1, method)) return real(0);
+    if (N <= GLINT_BINOMIAL_WALK_FULL) {
+        int Na = int(N);
+        int M = (u2 < N - real(Na)) ? Na + 1 : Na;  // glint_binomial_walk's component
+        int k = glint_binomial_walk_sparse_count(M, p, u1);
+        if (k == 0) return real(0);
+        if (k == 1) return N / real(M);  // the walk's 1 * (N / M)
+    } else if (N >= GLINT_BINOMIAL_WALK_END && N * p < GLINT_BINOMIAL_BUSY_LAMBDA) {
+        if (glint_binomial_surely_middle(N, p, u1, method) && glint_binomial_surely_clamped(N, p, u2)) return real(1);
+    }
+    return real(-1);
 }
 
 // The mean-preserving sampler's parameters at one (N, p), kept between draws that share them (the
@@ -1322,6 +1354,16 @@ GLINT_CONST(int) GLINT_BINOMIAL_UNBIASED = 4;
 #if defined(GLINT_GLSL) && defined(GLINT_BINOMIAL_VARIANT) && defined(GLINT_BINOMIAL_POW_METHOD)
 #define GLINT_BINOMIAL_FIXED_VARIANT
 #endif
+
+// glint_binomial_variant's positive count where glint_binomial_unbiased_sparse decides it (the
+// mean-preserving variant), else -1.
+GLINT_FN real glint_binomial_variant_sparse(int variant, real N, real p, real u1, real u2, int method) {
+#ifdef GLINT_BINOMIAL_FIXED_VARIANT
+    variant = GLINT_BINOMIAL_VARIANT;
+    method = GLINT_BINOMIAL_POW_METHOD;
+#endif
+    return (variant == GLINT_BINOMIAL_UNBIASED) ? glint_binomial_unbiased_sparse(N, p, u1, u2, method) : real(-1);
+}
 
 GLINT_FN glint_binomial glint_binomial_variant(int variant, real N, real p, real u1, real u2, int method) {
 #ifdef GLINT_BINOMIAL_FIXED_VARIANT

@@ -727,6 +727,12 @@ GLINT_FN real glint_vertex_corner_count(glint_grid_params g, real n, uint hash_x
     uint h1 = glint_cell_draw_word(hash_x, corner_key);
     real u1 = glint_open_unit_from_bits(h1);
     real u2 = glint_open_unit_from_bits(glint_cell_draw_second_word(h1, hash_y));
+#if !defined(GLINT_GLSL)
+    // The sparse draw's shortcut first (binomial.glsl; the same count): behind the skip test most
+    // draws are sparse, and the sampler's calls and dispatch cost more than the bounds.
+    real sparse = glint_binomial_variant_sparse(g.variant, n, p, u1, u2, g.pow_method);
+    if (sparse >= real(0)) return sparse;
+#endif
     return glint_binomial_variant(g.variant, n, p, u1, u2, g.pow_method).positive;
 }
 

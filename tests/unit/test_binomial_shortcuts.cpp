@@ -325,8 +325,8 @@ TEST_CASE("the far end's exponent bound fires only where log1p and exp give 0, a
 }
 
 // glint_binomial_unbiased_sparse (the grid's draws take it first) must give the mean-preserving
-// sampler's count bit for bit wherever it decides, in float and double: N on both sides of the
-// walk's ends (32, 40) and up to 1e5, p from 1e-7 to 1/2, u1 at 2 ulps either side of every
+// sampler's count bit for bit wherever it decides, in float and double: N from 0 through 2 (the
+// exact gates), on both sides of the walk's ends (32, 40), between them (the blend) and up to 1e5, p from 1e-7 to 1/2, u1 at 2 ulps either side of every
 // threshold of the shortcuts above and of the sparse walk's bounds for both components, u2 at and
 // around the component split, the clamped-mass bound and fixed values. `lax` is a deliberately wrong
 // shortcut: the sure middle's count 1 without its clamped-mass test, and the walk's 1 without its
@@ -337,7 +337,7 @@ long sparse_differences(bool lax, long& decided, long& checked) {
     using KR = K<real>;
     long differ = 0;
     for (int method = 0; method <= 2; ++method)
-        for (double nd : {2.5, 3.0, 4.75, 7.2, 10.5, 20.3, 31.9, 32.0, 32.5, 39.9, 40.0, 40.5, 60.0, 100.0, 176.0, 1000.0, 1e4, 1e5})
+        for (double nd : {0.0, 0.3, 1.0, 1.5, 2.0, 2.5, 3.0, 4.75, 7.2, 10.5, 20.3, 31.9, 32.0, 32.5, 33.7, 36.0, 39.9, 40.0, 40.5, 60.0, 100.0, 176.0, 1000.0, 1e4, 1e5})
             for (double pd : {1e-7, 1e-5, 1e-4, 3e-4, 1e-3, 3e-3, 0.01, 0.03, 0.1, 0.2, 0.5, 0.25 / nd, 0.2 / nd, 2.0 / nd, 16.0 / nd, 17.5 / nd}) {
                 const real N = static_cast<real>(nd), p = static_cast<real>(pd);
                 if (!(p <= real(0.5))) continue;
@@ -358,7 +358,14 @@ long sparse_differences(bool lax, long& decided, long& checked) {
                     }
                 }
                 std::vector<real> u2s = {real(0x1p-24), real(0.0137), real(0.5), real(0.77), real(1) - real(0x1p-24)};
-                for (real t : {N - real(Na), KR::glint_binomial_clamped_mass_bound(N * p)})
+                std::vector<real> u2_edges = {N - real(Na), KR::glint_binomial_clamped_mass_bound(N * p)};
+                if (N > KR::GLINT_BINOMIAL_WALK_FULL && N < KR::GLINT_BINOMIAL_WALK_END) {
+                    // The blend stretches u2 (glint_binomial_walks): its edges and the preimages of the edges above.
+                    const real w = KR::glint_binomial_walk_weight(N);
+                    u2_edges.insert(u2_edges.end(), {real(0.5) - real(0.5) * w, real(0.5) + real(0.5) * w, real(0.5) + (u2_edges[0] - real(0.5)) * w,
+                                                     real(0.5) + (u2_edges[1] - real(0.5)) * (real(1) - w) - real(0.5) * w});
+                }
+                for (real t : u2_edges)
                     if (t > 0 && t < 1) u2s.insert(u2s.end(), {std::nextafter(t, real(0)), t, std::nextafter(t, real(1))});
                 for (real u1 : u1s)
                     for (real u2 : u2s) {

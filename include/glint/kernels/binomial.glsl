@@ -1246,27 +1246,31 @@ GLINT_FN_INLINE glint_binomial glint_binomial_unbiased(real N, real p, real u1, 
 }
 
 // The mean-preserving sampler's positive count (glint_binomial_unbiased(N, p, u1, u2,
-// method).positive) where a sparse draw's bounds decide it without the walk or the middle, else -1:
-// for 2 < N <= GLINT_BINOMIAL_MAX_N, p <= 1/2 and a method other than naive (where the sampler
-// clamps neither), 0 where the near-end gate surely fires; for N up to WALK_FULL (where the walk
-// draws with the u2 it is given) the walk's sparse count (glint_binomial_walk_sparse_count),
-// scaled as the walk scales it (1 becomes N / M); from WALK_END on, where the busy middle does not
-// apply (N p below BUSY_LAMBDA), 1 where the sure middle's count is surely its clamp's
-// (glint_binomial_surely_middle, glint_binomial_surely_clamped). The sampler's own steps in its
-// own order, without its calls, dispatch and other paths: the grid's draws (behind its skip test,
-// so sparse) take this first. tests/unit/test_binomial_shortcuts.cpp compares it with the
-// sampler at and around every bound.
+// method).positive) where a sparse draw's bounds decide it without the walk or the middle, else -1,
+// for N from 0 to GLINT_BINOMIAL_MAX_N and p <= 1/2 (where the sampler clamps neither): up to N = 2
+// its exact gates (glint_binomial_unbiased_small); above, for a method other than naive, 0 where
+// the near-end gate surely fires; where the walk draws (glint_binomial_walks, which also stretches
+// u2 between WALK_FULL and WALK_END) its sparse count (glint_binomial_walk_sparse_count), scaled
+// as the walk scales it (1 becomes N / M); where the middle draws and the busy middle does not apply
+// (N p below BUSY_LAMBDA), 1 where the sure middle's count is surely its clamp's
+// (glint_binomial_surely_middle, glint_binomial_surely_clamped). The sampler's own steps in its own
+// order, without its calls, dispatch and other paths: the grid's draws (behind its skip test, so
+// sparse) take this first. tests/unit/test_binomial_shortcuts.cpp compares it with the sampler at
+// and around every bound.
 GLINT_FN real glint_binomial_unbiased_sparse(real N, real p, real u1, real u2, int method) {
-    if (!(method != GLINT_POW_NAIVE && N > real(2) && N <= GLINT_BINOMIAL_MAX_N && p >= real(0) && p <= real(0.5))) return real(-1);
+    if (!(N >= real(0) && N <= GLINT_BINOMIAL_MAX_N && p >= real(0) && p <= real(0.5))) return real(-1);
+    if (N <= real(2)) return glint_binomial_unbiased_small(N, p, u1).positive;
+    if (method == GLINT_POW_NAIVE) return real(-1);
     if (glint_binomial_surely_near_end(N, p, u1, method)) return real(0);
-    if (N <= GLINT_BINOMIAL_WALK_FULL) {
+    real u2_drawn = u2;
+    if (glint_binomial_walks(N, u2_drawn)) {
         int Na = int(N);
-        int M = (u2 < N - real(Na)) ? Na + 1 : Na;  // glint_binomial_walk's component
+        int M = (u2_drawn < N - real(Na)) ? Na + 1 : Na;  // glint_binomial_walk's component
         int k = glint_binomial_walk_sparse_count(M, p, u1);
         if (k == 0) return real(0);
         if (k == 1) return N / real(M);  // the walk's 1 * (N / M)
-    } else if (N >= GLINT_BINOMIAL_WALK_END && N * p < GLINT_BINOMIAL_BUSY_LAMBDA) {
-        if (glint_binomial_surely_middle(N, p, u1, method) && glint_binomial_surely_clamped(N, p, u2)) return real(1);
+    } else if (N * p < GLINT_BINOMIAL_BUSY_LAMBDA) {
+        if (glint_binomial_surely_middle(N, p, u1, method) && glint_binomial_surely_clamped(N, p, u2_drawn)) return real(1);
     }
     return real(-1);
 }

@@ -1059,10 +1059,15 @@ GLINT_FN int glint_binomial_walk_count(int M, real q, real v) {
 
 // The walk's draw for 2 < N < GLINT_BINOMIAL_WALK_END (the caller clamps N and p; u2 in (0, 1)
 // picks the component).
+// The walk's component: M = floor(N) + 1 where u2 < N - floor(N), else floor(N).
+GLINT_FN int glint_binomial_walk_trials(real N, real u2) {
+    int Na = int(N);
+    return (u2 < N - real(Na)) ? Na + 1 : Na;
+}
+
 GLINT_FN glint_binomial glint_binomial_walk(real N, real p, real u1, real u2) {
     bool lower = p <= real(0.5);
-    int Na = int(N);
-    int M = (u2 < N - real(Na)) ? Na + 1 : Na;
+    int M = glint_binomial_walk_trials(N, u2);
     real scale = N / real(M);
     int k = glint_binomial_walk_count(M, lower ? p : real(1) - p, lower ? u1 : real(1) - u1);
     real n = (k >= M) ? N : real(k) * scale;
@@ -1264,8 +1269,7 @@ GLINT_FN real glint_binomial_unbiased_sparse(real N, real p, real u1, real u2, i
     if (glint_binomial_surely_near_end(N, p, u1, method)) return real(0);
     real u2_drawn = u2;
     if (glint_binomial_walks(N, u2_drawn)) {
-        int Na = int(N);
-        int M = (u2_drawn < N - real(Na)) ? Na + 1 : Na;  // glint_binomial_walk's component
+        int M = glint_binomial_walk_trials(N, u2_drawn);
         int k = glint_binomial_walk_sparse_count(M, p, u1);
         if (k == 0) return real(0);
         if (k == 1) return N / real(M);  // the walk's 1 * (N / M)

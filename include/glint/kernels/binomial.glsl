@@ -1250,9 +1250,10 @@ GLINT_FN_INLINE glint_binomial glint_binomial_unbiased(real N, real p, real u1, 
     return glint_binomial_unbiased_rest(N, p, u1, u2, method);  // one call: GLSL inlines it once
 }
 
-// The mean-preserving sampler's positive count (glint_binomial_unbiased(N, p, u1, u2,
-// method).positive) where a sparse draw's bounds decide it without the walk or the middle, else -1,
-// for N from 0 to GLINT_BINOMIAL_MAX_N and p <= 1/2 (where the sampler clamps neither): up to N = 2
+#if !defined(GLINT_GLSL)
+// C++ only (GLSL keeps the sampler's one path): the mean-preserving sampler's positive count
+// (glint_binomial_unbiased(N, p, u1, u2, method).positive) where a sparse draw's bounds decide it
+// without the walk or the middle, else -1, for N from 0 to GLINT_BINOMIAL_MAX_N and p <= 1/2 (where the sampler clamps neither): up to N = 2
 // its exact gates (glint_binomial_unbiased_small); above, for a method other than naive, 0 where
 // the near-end gate surely fires; where the walk draws (glint_binomial_walks, which also stretches
 // u2 between WALK_FULL and WALK_END) its sparse count (glint_binomial_walk_sparse_count), scaled
@@ -1278,6 +1279,7 @@ GLINT_FN real glint_binomial_unbiased_sparse(real N, real p, real u1, real u2, i
     }
     return real(-1);
 }
+#endif
 
 // The mean-preserving sampler's parameters at one (N, p), kept between draws that share them (the
 // IBL multinomial's root draws of a lattice point's three triangle vertices; the grid's draws no
@@ -1363,15 +1365,13 @@ GLINT_CONST(int) GLINT_BINOMIAL_UNBIASED = 4;
 #define GLINT_BINOMIAL_FIXED_VARIANT
 #endif
 
-// glint_binomial_variant's positive count where glint_binomial_unbiased_sparse decides it (the
-// mean-preserving variant), else -1.
+#if !defined(GLINT_GLSL)
+// C++ only: glint_binomial_variant's positive count where glint_binomial_unbiased_sparse decides it
+// (the mean-preserving variant), else -1.
 GLINT_FN real glint_binomial_variant_sparse(int variant, real N, real p, real u1, real u2, int method) {
-#ifdef GLINT_BINOMIAL_FIXED_VARIANT
-    variant = GLINT_BINOMIAL_VARIANT;
-    method = GLINT_BINOMIAL_POW_METHOD;
-#endif
     return (variant == GLINT_BINOMIAL_UNBIASED) ? glint_binomial_unbiased_sparse(N, p, u1, u2, method) : real(-1);
 }
+#endif
 
 GLINT_FN glint_binomial glint_binomial_variant(int variant, real N, real p, real u1, real u2, int method) {
 #ifdef GLINT_BINOMIAL_FIXED_VARIANT

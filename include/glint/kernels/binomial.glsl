@@ -1253,16 +1253,16 @@ GLINT_FN_INLINE glint_binomial glint_binomial_unbiased(real N, real p, real u1, 
 #if !defined(GLINT_GLSL)
 // C++ only (GLSL keeps the sampler's one path): the mean-preserving sampler's positive count
 // (glint_binomial_unbiased(N, p, u1, u2, method).positive) where a sparse draw's bounds decide it
-// without the walk or the middle, else -1, for N from 0 to GLINT_BINOMIAL_MAX_N and p <= 1/2 (where the sampler clamps neither): up to N = 2
-// its exact gates (glint_binomial_unbiased_small); above, for a method other than naive, 0 where
-// the near-end gate surely fires; where the walk draws (glint_binomial_walks, which also stretches
-// u2 between WALK_FULL and WALK_END) its sparse count (glint_binomial_walk_sparse_count), scaled
-// as the walk scales it (1 becomes N / M); where the middle draws and the busy middle does not apply
-// (N p below BUSY_LAMBDA), 1 where the sure middle's count is surely its clamp's
-// (glint_binomial_surely_middle, glint_binomial_surely_clamped). The sampler's own steps in its own
-// order, without its calls, dispatch and other paths: the grid's draws (behind its skip test, so
-// sparse) take this first. tests/unit/test_binomial_shortcuts.cpp compares it with the sampler at
-// and around every bound.
+// without the walk or the middle, else -1, for N from 0 to GLINT_BINOMIAL_MAX_N and p <= 1/2 (where
+// the sampler clamps neither): up to N = 2 its exact gates (glint_binomial_unbiased_small); above,
+// for a method other than naive, 0 where the near-end gate surely fires; where the walk draws
+// (glint_binomial_walks, which also stretches u2 between WALK_FULL and WALK_END) its sparse count
+// (glint_binomial_walk_sparse_count), scaled as the walk scales it (1 becomes N / M); where the
+// middle draws and the busy middle does not apply (N p below BUSY_LAMBDA), 1 where the sure
+// middle's count is surely its clamp's (glint_binomial_surely_middle,
+// glint_binomial_surely_clamped). The sampler's own steps in its own order, without its calls,
+// dispatch and other paths: the grid's draws (behind its skip test, so sparse) take this first.
+// tests/unit/test_binomial_shortcuts.cpp compares it with the sampler at and around every bound.
 GLINT_FN real glint_binomial_unbiased_sparse(real N, real p, real u1, real u2, int method) {
     if (!(N >= real(0) && N <= GLINT_BINOMIAL_MAX_N && p >= real(0) && p <= real(0.5))) return real(-1);
     if (N <= real(2)) return glint_binomial_unbiased_small(N, p, u1).positive;

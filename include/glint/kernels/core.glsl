@@ -51,11 +51,8 @@ static bool glint_cpu_avx512() { return glint_cpu_lanes() >= 2; }
 // value from code built for the baseline changes the ABI): the same words, bit for bit.
 template <class V>
 __attribute__((always_inline)) static inline void glint_hash_u32_vector(V& x) {
-    x ^= x >> 16u;
-    x *= 0x7feb352du;
-    x ^= x >> 15u;
-    x *= 0x846ca68bu;
-    x ^= x >> 16u;
+    glint_hash_u32_first_step(x);  // below
+    glint_hash_u32_vector_rest(x);
 }
 
 // C++ only: glint_hash_u32 of a ^ b for many pairs, its first step taken into the operands. That

@@ -1014,22 +1014,25 @@ GLINT_LANES_BODY void glint_grid_sample_lights_x8_body(glint_grid_pixel& px, con
         any |= bits[i];
     }
     // The draws of the lanes that draw (lanes past count have E[R] = 0), in glint_grid_sample_pixel's
-    // order: bit k of a lane's `order` is set where the k-th vertex in that order draws somewhere.
+    // order: bit 4 k + j of a lane's mask is set where the k-th vertex in that order may draw at
+    // corner j (vertices 0 to 7 in `first`, 8 to 11 in `rest`), so that one loop over a lane's set
+    // bits walks its vertices and corners.
     const bool four_points = px.v.count == 12;
     const int slot[12] = {0, 4, 8, 1, 5, 9, 2, 6, 10, 3, 7, 11};  // glint_grid_draw_slot(12, k)
-    i32x8 order = {};
-    for (int k = 0; k < px.v.count; ++k) order |= (bits[four_points ? slot[k] : k] != 0) & (1 << k);
+    u32x8 first = {}, rest = {};
+    for (int k = 0; k < px.v.count; ++k) {
+        const u32x8 b = reinterpret_cast<u32x8>(bits[four_points ? slot[k] : k]);
+        if (k < 8) first |= b << (4 * k);
+        else rest |= b << (4 * (k - 8));
+    }
     for (int lanes = __builtin_ia32_movmskps256(reinterpret_cast<f32x8>(o.draws & (any != 0))); lanes != 0; lanes &= lanes - 1) {
         const int l = __builtin_ctz(static_cast<unsigned>(lanes));
         glint_grid_estimate& e = out[l];
-        for (int vertices = order[l]; vertices != 0; vertices &= vertices - 1) {
-            const int k = __builtin_ctz(static_cast<unsigned>(vertices)), i = four_points ? slot[k] : k;
+        for (unsigned long long m = first[l] | static_cast<unsigned long long>(rest[l]) << 32; m != 0; m &= m - 1) {
+            const int b = __builtin_ctzll(m), k = b >> 2, j = b & 3, i = four_points ? slot[k] : k;
             if (!(px.v.weight[i] > 0.0f)) continue;
-            for (int corners = bits[i][l]; corners != 0; corners &= corners - 1) {
-                const int j = __builtin_ctz(static_cast<unsigned>(corners));
-                e.value += px.v.weight[i] * o.mu[j][l] * glint_grid_corner_count(px, g, i, o.key[j][l], o.corner_p[j][l]) / N;
-                ++e.draws;
-            }
+            e.value += px.v.weight[i] * o.mu[j][l] * glint_grid_corner_count(px, g, i, o.key[j][l], o.corner_p[j][l]) / N;
+            ++e.draws;
         }
     }
 }

@@ -20,7 +20,11 @@
 // two passes are timed apart. --one-lattice-point shades the glints on
 // one of the footprint's four lattice points per pixel (glint_grid_pixel_setup_stochastic, its
 // uniform a hash of the pixel as lights_scene.hpp's lattice_uniform; the CPU images do the same).
-// --egl picks the EGL platform to try
+// --stage setup|vertices (profiling; the IBL scenes only, without --compare) stops each IBL glint
+// pixel's shading early: after the level probabilities and the smooth test (glint_ibl_needs_draws),
+// or after the grid vertices as well, where it would draw (glint_grid_pixel_vertices); the glint
+// frame then times that much of the glint shading, and the stages' differences show where a GPU's
+// time goes. --egl picks the EGL platform to try
 // first. --pragma adds "#pragma TEXT" to every fragment and compute shader ("--pragma none" drops those given
 // before it). On an H200 (driver 580.159.04, docs/gpu.md) NVIDIA's compiler, unrolling the
 // kernels' loops as it does by default, took 68 s over lights.frag and 35 s over ibl.frag (its
@@ -63,7 +67,7 @@ namespace {
                  "glint_gl: %s\n"
                  "usage: glint_gl [--size WxH] [--frames N] [--warmup N] [--scenes point,sun,area,ibl4,ibl8] [--deferred]\n"
                  "                [--one-lattice-point] [--compare] [--no-images] [--env PATH.exr] [--out DIR]\n"
-                 "                [--egl surfaceless|device|default] [--pragma TEXT]...\n",
+                 "                [--egl surfaceless|device|default] [--pragma TEXT]... [--stage full|setup|vertices]\n",
                  problem.c_str());
     std::exit(2);
 }
@@ -75,6 +79,7 @@ struct settings {
     bool compare = false, images = true;
     bool deferred = false;  // a G-buffer raster pass, then a compute shading pass
     bool one_lattice_point = false;  // glints on one lattice point per pixel
+    int stage = 0;  // --stage: 0 full, 1 setup, 2 vertices (glint_gl_ibl_stage, ibl.frag)
     std::string env = std::string(GLINT_DATA_DIR) + "/envmaps/sunset.exr";
     std::string out;
     std::string egl = "surfaceless";
@@ -96,6 +101,13 @@ settings parse(int argc, char** argv) {
         else if (a == "--deferred") s.deferred = true;
         else if (a == "--one-lattice-point") s.one_lattice_point = true;
         else if (a == "--no-images") s.images = false;
+        else if (a == "--stage") {
+            const std::string stage = value();
+            if (stage == "full") s.stage = 0;
+            else if (stage == "setup") s.stage = 1;
+            else if (stage == "vertices") s.stage = 2;
+            else usage("unknown stage '" + stage + "' (full, setup, vertices)");
+        }
         else if (a == "--env") s.env = value();
         else if (a == "--out") s.out = value();
         else if (a == "--pragma") {
@@ -118,6 +130,11 @@ settings parse(int argc, char** argv) {
             if (s.scenes.empty()) usage("--scenes needs at least one scene");
         } else if (a == "--help" || a == "-h") usage("draws glint's showcase scenes with OpenGL and times them");
         else usage("unknown argument '" + a + "'");
+    }
+    if (s.stage != 0) {
+        if (s.compare) usage("--stage setup or vertices draws partial glint frames, which --compare cannot check against the CPU's");
+        for (const auto& name : s.scenes)
+            if (!is_ibl_scene(name)) usage("--stage applies to the IBL scenes only (ibl4, ibl8), not '" + name + "'");
     }
     return s;
 }
@@ -617,6 +634,7 @@ int main(int argc, char** argv) {
         std::vector<std::string> preamble;
         for (const auto& text : opt.pragmas) preamble.push_back("#pragma " + text);
         preamble.push_back(std::string("#define GLINT_GL_ONE_LATTICE_POINT ") + (opt.one_lattice_point ? "1" : "0"));
+        preamble.push_back("#define GLINT_GL_STAGE " + std::to_string(opt.stage));
         const programs progs = make_programs(lights, need[4] || need[8], opt.deferred, opt.compare, preamble);
         std::printf("glint_gl: [%.1f s] drawing\n", seconds_since(start));
         const mesh m = make_mesh();
@@ -786,6 +804,9 @@ int main(int argc, char** argv) {
                << "Every scene is drawn with glints and with the smooth BRDF of the same scene, each by its own programs (the smooth ones "
                   "compiled without the glint code; the IBL's smooth frame reads the radiance only).\n\n"
                << (opt.one_lattice_point ? "Glints on one lattice point per pixel (--one-lattice-point).\n\n" : "")
+               << (opt.stage == 1 ? "Profiling (--stage setup): the glint frames stop each pixel's glint shading after the level probabilities and the smooth test.\n\n"
+                   : opt.stage == 2 ? "Profiling (--stage vertices): the glint frames stop each pixel's glint shading after its grid vertices, where it would draw.\n\n"
+                                    : "")
                << "Device: " << device << " (OpenGL " << glint_gl::gl_context::version() << "), " << opt.width << "x" << opt.height << ", median of "
                << opt.frames << " frames after " << opt.warmup << " warm-up.\n\n"
                << timings.str();

@@ -4,6 +4,22 @@
 // G-buffer only and deferred.comp, which includes this file with GLINT_GL_COMPUTE, calls
 // glint_gl_shade_ibl on it.
 
+// glint_gl --stage (profiling): the glint shading stopped after glint_ibl_needs_draws (stage 1)
+// or after the grid vertices as well where it would draw (stage 2), what was computed folded into
+// a factor within 2^-20 of 1, so that the compiler cannot leave it out.
+float glint_gl_ibl_stage(inout glint_grid_pixel px, glint_ibl_indicators ind, float e_d, float d_h) {
+    glint_multinomial_probabilities all;
+    glint_grid_estimate o;
+    bool draws = glint_ibl_needs_draws(u_grid, u_levels, ind, e_d, d_h, px.N, all, o);
+    uint h = floatBitsToUint(o.value);
+    if (GLINT_GL_STAGE >= 2 && draws) {
+        glint_grid_pixel_vertices(px, u_grid);
+        for (int i = 0; i < 12; ++i)
+            h ^= px.v.hash_x[i] ^ px.v.hash_y[i] ^ px.v.hash_z[i] ^ floatBitsToUint(px.v.weight[i] * px.v.share[i] + px.skip_scale[i]);
+    }
+    return 1.0 + float(h & 1u) * exp2(-20.0);
+}
+
 vec3 glint_gl_shade_ibl(vec3 position, vec3 n, vec2 uv, vec2 duvdx, vec2 duvdy) {
     vec3 d = normalize(position - u_eye);
     float sa = sqrt(u_roughness);
@@ -15,7 +31,12 @@ vec3 glint_gl_shade_ibl(vec3 position, vec3 n, vec2 uv, vec2 duvdx, vec2 duvdy) 
     if (GLINT_GL_GLINTS != 0) {
         float dh = u_total_area;
         glint_grid_pixel px = glint_grid_pixel_setup_stochastic(uv, duvdx, duvdy, u_grid, glint_gl_lattice_u(u_grid.seed));
-        m = glint_modulation(glint_ibl_sample_pixel(px, u_grid, u_levels, ind, glint_gl_table(1, sqrt(max(cos_o, 0.0)), sa), dh));
+        float e_d = glint_gl_table(1, sqrt(max(cos_o, 0.0)), sa);
+#if GLINT_GL_STAGE == 0
+        m = glint_modulation(glint_ibl_sample_pixel(px, u_grid, u_levels, ind, e_d, dh));
+#else
+        m = glint_gl_ibl_stage(px, ind, e_d, dh);
+#endif
     }
     float albedo = glint_gl_table(0, sqrt(max(cos_o, 0.0)), sa);
     vec3 L;

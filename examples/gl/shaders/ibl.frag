@@ -6,7 +6,9 @@
 
 // glint_gl --stage (profiling): the glint shading stopped after glint_ibl_needs_draws (stage 1)
 // or after the grid vertices as well where it would draw (stage 2), what was computed folded into
-// a factor within 2^-20 of 1, so that the compiler cannot leave it out.
+// a factor within 2^-20 of 1, so that the compiler cannot leave it out. Left out of the full
+// program, so that the program timed by default is the one before --stage.
+#if GLINT_GL_STAGE != 0
 float glint_gl_ibl_stage(inout glint_grid_pixel px, glint_ibl_indicators ind, float e_d, float d_h) {
     glint_multinomial_probabilities all;
     glint_grid_estimate o;
@@ -19,6 +21,7 @@ float glint_gl_ibl_stage(inout glint_grid_pixel px, glint_ibl_indicators ind, fl
     }
     return 1.0 + float(h & 1u) * exp2(-20.0);
 }
+#endif
 
 vec3 glint_gl_shade_ibl(vec3 position, vec3 n, vec2 uv, vec2 duvdx, vec2 duvdy) {
     vec3 d = normalize(position - u_eye);

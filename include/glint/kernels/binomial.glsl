@@ -1057,14 +1057,14 @@ GLINT_FN int glint_binomial_walk_count(int M, real q, real v) {
     return (sparse >= 0) ? sparse : glint_binomial_walk_steps(M, q, v);
 }
 
-// The walk's draw for 2 < N < GLINT_BINOMIAL_WALK_END (the caller clamps N and p; u2 in (0, 1)
-// picks the component).
 // The walk's component: M = floor(N) + 1 where u2 < N - floor(N), else floor(N).
 GLINT_FN int glint_binomial_walk_trials(real N, real u2) {
     int Na = int(N);
     return (u2 < N - real(Na)) ? Na + 1 : Na;
 }
 
+// The walk's draw for 2 < N < GLINT_BINOMIAL_WALK_END (the caller clamps N and p; u2 in (0, 1)
+// picks the component, glint_binomial_walk_trials).
 GLINT_FN glint_binomial glint_binomial_walk(real N, real p, real u1, real u2) {
     bool lower = p <= real(0.5);
     int M = glint_binomial_walk_trials(N, u2);

@@ -110,9 +110,10 @@ public:
     std::size_t clamped_pixels() const { return clamped_; }
 
     // Trilinear lookup at direction d (world, y up) and sqrt(alpha) in [0, 1]. The channel count as
-    // a constant, so that the compiler unrolls and vectorises the taps' sums: read at run time, all
-    // 3 + K channels cost 1.8x the radiance's 3 (glint_frame_loop ibl-lookup against ibl-radiance,
-    // K = 4: 750 against 415 us a frame); as constants 1.4x (530 against 375; DEVELOPERS.md).
+    // a constant, so that the compiler unrolls the taps' sums and keeps them four channels a vector
+    // register (channel_sums): read at run time, all 3 + K channels cost 1.8x the radiance's 3
+    // (glint_frame_loop ibl-lookup against ibl-radiance, K = 4: 750 against 415 us a frame); as
+    // constants 1.4x (530 against 375); four channels a register 1.1x to 1.2x (DEVELOPERS.md).
     sample lookup(const glm::vec3& d, float sqrt_alpha) const {
         switch (channels()) {  // 3 to 8 levels (build_environment checks)
             case 6: return lookup_channels<6>(d, sqrt_alpha);
@@ -148,26 +149,48 @@ private:
         const float f = std::clamp(sqrt_alpha, 0.0f, 1.0f) * static_cast<float>(chain_.size() - 1);
         const std::size_t m0 = std::min(static_cast<std::size_t>(f), chain_.size() - 1), m1 = std::min(m0 + 1, chain_.size() - 1);
         const float t = f - static_cast<float>(m0);
-        float v[16] = {};
-        add_bilinear<Read>(chain_[m0], uv, channels(), Read, 1 - t, v);
-        if (t > 0) add_bilinear<Read>(chain_[m1], uv, channels(), Read, t, v);
+        channel_sums<Read> v{};
+        add_bilinear(chain_[m0], uv, channels(), 1 - t, v);
+        if (t > 0) add_bilinear(chain_[m1], uv, channels(), t, v);
+        float out[16] = {};
+        for (int j = 0; j < channel_sums<Read>::chunks; ++j)
+            for (int l = 0; l < 4; ++l) out[channel_sums<Read>::offset(j) + l] = v.sum[j][l];
         sample s;
-        s.radiance = glm::vec3(v[0], v[1], v[2]);
-        for (int k2 = 0; k2 < 8; ++k2) s.indicators.w[k2] = k2 < levels_.count ? v[3 + k2] : 0.0f;
+        s.radiance = glm::vec3(out[0], out[1], out[2]);
+        for (int k2 = 0; k2 < 8; ++k2) s.indicators.w[k2] = k2 < levels_.count ? out[3 + k2] : 0.0f;
         return s;
     }
 
-    // out[0..read) += weight x the GL_LINEAR filtered texel of m (C channels a texel) at uv; Read:
-    // the same count as a constant (0: read at run time, as the builder's fetches do).
+    // The sums of channels 0 .. Read - 1, four at a time (so that the compiler keeps each four in
+    // one vector register): chunk j holds channels offset(j) .. offset(j) + 3, the last chunk
+    // overlapping the one before where Read is not a multiple of 4 (the shared channels summed
+    // twice, with the same operations). Read = 3 reads channel 3 too: a texel has at least 6.
     template <int Read>
-    static void add_bilinear(const map& m, const glm::vec2& uv, int C, int read, float weight, float* out) {
+    struct channel_sums {
+        static constexpr int chunks = (Read + 3) / 4;
+        static constexpr int offset(int j) { return Read < 4 ? 0 : std::min(4 * j, Read - 4); }
+        float sum[static_cast<std::size_t>(chunks)][4];
+    };
+
+    // f(w, texel) for the four taps of the GL_LINEAR filtered texel of m (C channels a texel) at
+    // uv, w the tap's bilinear weight times `weight`.
+    template <class F>
+    static void for_each_tap(const map& m, const glm::vec2& uv, int C, float weight, F&& f) {
         const auto taps = detail::glsl::kernels<float>::glint_bilinear(uv, m.width, m.height);
         for (int i = 0; i < 4; ++i) {
-            const float w = weight * taps.weight[i];
-            const float* px = &m.data[(static_cast<std::size_t>(taps.texel[i].y) * static_cast<std::size_t>(m.width) + static_cast<std::size_t>(taps.texel[i].x)) *
-                                      static_cast<std::size_t>(C)];
-            for (int c = 0; c < (Read > 0 ? Read : read); ++c) out[c] += w * px[c];
+            const glm::ivec2 p = taps.texel[i];
+            f(weight * taps.weight[i],
+              &m.data[(static_cast<std::size_t>(p.y) * static_cast<std::size_t>(m.width) + static_cast<std::size_t>(p.x)) * static_cast<std::size_t>(C)]);
         }
+    }
+
+    // v += weight x the GL_LINEAR filtered texel of m at uv.
+    template <int Read>
+    static void add_bilinear(const map& m, const glm::vec2& uv, int C, float weight, channel_sums<Read>& v) {
+        for_each_tap(m, uv, C, weight, [&v](float w, const float* px) {
+            for (int j = 0; j < channel_sums<Read>::chunks; ++j)
+                for (int l = 0; l < 4; ++l) v.sum[j][l] += w * px[static_cast<std::size_t>(channel_sums<Read>::offset(j) + l)];
+        });
     }
 
     float table(const std::vector<float>& t, float x, float y) const {
@@ -320,7 +343,10 @@ inline environment build_environment(int width, int height, const std::vector<fl
         for (int c = 0; c < C; ++c) out[c] = 0;
         for (int side = 0; side < 2; ++side) {
             const float wl = side == 0 ? 1 - t : t;
-            if (wl > 0) environment::add_bilinear<0>(pyramid[side == 0 ? l0 : l1], uv, C, C, wl, out);
+            if (wl > 0)  // every channel: C is known at run time only
+                environment::for_each_tap(pyramid[side == 0 ? l0 : l1], uv, C, wl, [&](float w, const float* px) {
+                    for (int c = 0; c < C; ++c) out[c] += w * px[c];
+                });
         }
     };
     // The roughness chain.

@@ -150,11 +150,11 @@ private:
         const std::size_t m0 = std::min(static_cast<std::size_t>(f), chain_.size() - 1), m1 = std::min(m0 + 1, chain_.size() - 1);
         const float t = f - static_cast<float>(m0);
         channel_sums<Read> v{};
-        add_bilinear(chain_[m0], uv, channels(), 1 - t, v);
-        if (t > 0) add_bilinear(chain_[m1], uv, channels(), t, v);
+        const auto add = [&v](float w, const float* texel) { v.add(w, texel); };
+        for_each_tap(chain_[m0], uv, channels(), 1 - t, add);
+        if (t > 0) for_each_tap(chain_[m1], uv, channels(), t, add);
         float out[16] = {};
-        for (int j = 0; j < channel_sums<Read>::chunks; ++j)
-            for (int l = 0; l < 4; ++l) out[channel_sums<Read>::offset(j) + l] = v.sum[j][l];
+        v.write(out);
         sample s;
         s.radiance = glm::vec3(out[0], out[1], out[2]);
         for (int k2 = 0; k2 < 8; ++k2) s.indicators.w[k2] = k2 < levels_.count ? out[3 + k2] : 0.0f;
@@ -170,6 +170,17 @@ private:
         static constexpr int chunks = (Read + 3) / 4;
         static constexpr int offset(int j) { return Read < 4 ? 0 : std::min(4 * j, Read - 4); }
         float sum[static_cast<std::size_t>(chunks)][4];
+
+        // sum += w x channels 0 .. Read - 1 of a texel.
+        void add(float w, const float* texel) {
+            for (int j = 0; j < chunks; ++j)
+                for (int l = 0; l < 4; ++l) sum[j][l] += w * texel[static_cast<std::size_t>(offset(j) + l)];
+        }
+        // out[c] = channel c's sum, for c < Read (and out[3] where Read = 3).
+        void write(float* out) const {
+            for (int j = 0; j < chunks; ++j)
+                for (int l = 0; l < 4; ++l) out[offset(j) + l] = sum[j][l];
+        }
     };
 
     // f(w, texel) for the four taps of the GL_LINEAR filtered texel of m (C channels a texel) at
@@ -182,15 +193,6 @@ private:
             f(weight * taps.weight[i],
               &m.data[(static_cast<std::size_t>(p.y) * static_cast<std::size_t>(m.width) + static_cast<std::size_t>(p.x)) * static_cast<std::size_t>(C)]);
         }
-    }
-
-    // v += weight x the GL_LINEAR filtered texel of m at uv.
-    template <int Read>
-    static void add_bilinear(const map& m, const glm::vec2& uv, int C, float weight, channel_sums<Read>& v) {
-        for_each_tap(m, uv, C, weight, [&v](float w, const float* px) {
-            for (int j = 0; j < channel_sums<Read>::chunks; ++j)
-                for (int l = 0; l < 4; ++l) v.sum[j][l] += w * px[static_cast<std::size_t>(channel_sums<Read>::offset(j) + l)];
-        });
     }
 
     float table(const std::vector<float>& t, float x, float y) const {
